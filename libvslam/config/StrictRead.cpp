@@ -1,0 +1,171 @@
+#include <libvslam/config/StrictRead.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace vslam::config
+{
+namespace
+{
+std::string trim(const std::string& s)
+{
+	const auto b = s.find_first_not_of(" \t\r\n");
+	if (b == std::string::npos) return {};
+	const auto e = s.find_last_not_of(" \t\r\n");
+	return s.substr(b, e - b + 1);
+}
+
+std::string where(const std::string& section, const std::string& key)
+{
+	return "[" + section + "] " + key;
+}
+
+[[noreturn]] void fail(
+	const std::string& section, const std::string& key,
+	const std::string& value, const std::string& what)
+{
+	throw ConfigError(
+		where(section, key) + " = '" + value + "': " + what);
+}
+
+std::string lower(std::string s)
+{
+	for (auto& ch : s) ch = static_cast<char>(std::tolower(ch));
+	return s;
+}
+
+double parseDouble(
+	const std::string& section, const std::string& key, const std::string& v)
+{
+	if (v.empty()) fail(section, key, v, "empty value, expected a number");
+	errno = 0;
+	char* end = nullptr;
+	const double d = std::strtod(v.c_str(), &end);
+	if (end == v.c_str() || *end != '\0')
+		fail(
+			section, key, v,
+			"not a number (comments after a value must start with '//')");
+	if (errno == ERANGE || !std::isfinite(d))
+		fail(section, key, v, "not a finite number");
+	return d;
+}
+
+void checkRange(
+	const std::string& section, const std::string& key, const std::string& v,
+	double d, const Range& range)
+{
+	if (!range.contains(d))
+		fail(section, key, v, "out of range, must be " + range.describe());
+}
+}  // namespace
+
+bool Range::contains(double v) const
+{
+	const bool okLo = loInclusive ? v >= lo : v > lo;
+	const bool okHi = hiInclusive ? v <= hi : v < hi;
+	return okLo && okHi;
+}
+
+std::string Range::describe() const
+{
+	std::ostringstream s;
+	const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
+	if (hasLo && hasHi)
+		s << "in " << (loInclusive ? "[" : "(") << lo << ", " << hi
+		  << (hiInclusive ? "]" : ")");
+	else if (hasLo)
+		s << (loInclusive ? ">= " : "> ") << lo;
+	else if (hasHi)
+		s << (hiInclusive ? "<= " : "< ") << hi;
+	else
+		s << "any number";
+	return s.str();
+}
+
+std::string rawValue(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key)
+{
+	if (!cfg.keyExists(section, key)) return {};
+	return trim(cfg.read_string(section, key, "", false));
+}
+
+double readDouble(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, double defaultValue, const Range& range)
+{
+	if (!cfg.keyExists(section, key)) return defaultValue;
+	const std::string v = rawValue(cfg, section, key);
+	const double d = parseDouble(section, key, v);
+	checkRange(section, key, v, d, range);
+	return d;
+}
+
+double readDegreesAsRadians(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, double defaultRadians, const Range& rangeDegrees)
+{
+	return readDouble(
+			   cfg, section, key, defaultRadians * 180.0 / M_PI,
+			   rangeDegrees) *
+		M_PI / 180.0;
+}
+
+int64_t readInt(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, int64_t defaultValue, const Range& range)
+{
+	if (!cfg.keyExists(section, key)) return defaultValue;
+	const std::string v = rawValue(cfg, section, key);
+	if (v.empty()) fail(section, key, v, "empty value, expected an integer");
+	errno = 0;
+	char* end = nullptr;
+	const long long i = std::strtoll(v.c_str(), &end, 10);
+	if (end == v.c_str() || *end != '\0' || errno == ERANGE)
+		fail(section, key, v, "not an integer");
+	checkRange(section, key, v, static_cast<double>(i), range);
+	return i;
+}
+
+bool readBool(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, bool defaultValue)
+{
+	if (!cfg.keyExists(section, key)) return defaultValue;
+	const std::string v = rawValue(cfg, section, key);
+	const std::string l = lower(v);
+	if (l == "true" || l == "yes" || l == "1" || l == "on") return true;
+	if (l == "false" || l == "no" || l == "0" || l == "off") return false;
+	fail(section, key, v, "not a boolean (true/false, yes/no, 1/0)");
+}
+
+std::string readString(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, const std::string& defaultValue)
+{
+	if (!cfg.keyExists(section, key)) return defaultValue;
+	return rawValue(cfg, section, key);
+}
+
+size_t readChoice(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, size_t defaultIndex,
+	const std::vector<std::string>& names)
+{
+	if (!cfg.keyExists(section, key)) return defaultIndex;
+	const std::string v = rawValue(cfg, section, key);
+	for (size_t i = 0; i < names.size(); i++)
+		if (names[i] == v) return i;
+	char* end = nullptr;
+	const long idx = std::strtol(v.c_str(), &end, 10);
+	if (!v.empty() && *end == '\0' && idx >= 0 &&
+		static_cast<size_t>(idx) < names.size())
+		return static_cast<size_t>(idx);
+	std::string all;
+	for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+	fail(section, key, v, "unknown choice, expected one of: " + all);
+}
+
+}  // namespace vslam::config

@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+#include <libvslam/config/StrictRead.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+using namespace vslam;
+using namespace vslam::config;
+
+namespace
+{
+std::string errorOf(const std::function<void()>& f)
+{
+	try
+	{
+		f();
+	}
+	catch (const ConfigError& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+}  // namespace
+
+TEST(StrictRead, ReadsValidValuesAndKeepsDefaultsForAbsentKeys)
+{
+	mrpt::config::CConfigFileMemory c(
+		"[s]\na = 0.25 // a comment\nb = 12\nc = yes\nd = deg\ne = 90\n");
+	EXPECT_DOUBLE_EQ(readDouble(c, "s", "a", 9), 0.25);
+	EXPECT_DOUBLE_EQ(readDouble(c, "s", "missing", 9), 9);
+	EXPECT_EQ(readInt(c, "s", "b", 0), 12);
+	EXPECT_TRUE(readBool(c, "s", "c", false));
+	EXPECT_EQ(readString(c, "s", "d", ""), "deg");
+	EXPECT_NEAR(readDegreesAsRadians(c, "s", "e", 0), M_PI / 2, 1e-12);
+	EXPECT_EQ(readChoice(c, "s", "d", 0, {"rad", "deg"}), 1u);
+}
+
+TEST(StrictRead, UnparsableValuesNameSectionAndKey)
+{
+	mrpt::config::CConfigFileMemory c(
+		"[motion]\nsigma_T = abc\nx = 0.3 # hash\nn = 2.5\nb = maybe\n"
+		"k = nan\n");
+	const std::string e1 = errorOf([&] { readDouble(c, "motion", "sigma_T", 0); });
+	EXPECT_NE(e1.find("[motion] sigma_T"), std::string::npos) << e1;
+	EXPECT_NE(e1.find("'abc'"), std::string::npos) << e1;
+	EXPECT_NE(errorOf([&] { readDouble(c, "motion", "x", 0); }).find("'//'"),
+			  std::string::npos);
+	EXPECT_NE(errorOf([&] { readInt(c, "motion", "n", 0); }), "");
+	EXPECT_NE(errorOf([&] { readBool(c, "motion", "b", false); }), "");
+	EXPECT_NE(errorOf([&] { readDouble(c, "motion", "k", 0); }), "");
+}
+
+TEST(StrictRead, OutOfRangeValuesSayTheAllowedRange)
+{
+	mrpt::config::CConfigFileMemory c("[pf]\nBETA = 1.5\nN = 0\nch = foo\n");
+	const std::string e =
+		errorOf([&] { readDouble(c, "pf", "BETA", 0.5, Range::closed(0, 1)); });
+	EXPECT_NE(e.find("out of range"), std::string::npos) << e;
+	EXPECT_NE(e.find("[0, 1]"), std::string::npos) << e;
+	EXPECT_NE(errorOf([&] { readInt(c, "pf", "N", 1, Range::closed(1, 1e6)); }), "");
+	const std::string e3 =
+		errorOf([&] { readChoice(c, "pf", "ch", 0, {"joint", "sequential"}); });
+	EXPECT_NE(e3.find("joint, sequential"), std::string::npos) << e3;
+}

@@ -1,0 +1,158 @@
+#include <libvslam/models/CLandmarkModel.h>
+
+#include <cmath>
+
+namespace vslam
+{
+namespace
+{
+se2::Pose asPose(const LandmarkEstimate& l)
+{
+	return {l.mean[0], l.mean[1], l.mean[2]};
+}
+
+/** Range and bearing geometry from the sensor at s (+) sensorPose. */
+struct RangeBearingGeometry
+{
+	se2::Pose sensor;
+	double dx = 0, dy = 0, r2 = 0, r = 0;
+};
+
+RangeBearingGeometry geometry(
+	const se2::Pose& s, const se2::Pose& sensorPose, const Eigen::Vector3d& l)
+{
+	RangeBearingGeometry g;
+	g.sensor = se2::compose(s, sensorPose);
+	g.dx = l[0] - g.sensor.x;
+	g.dy = l[1] - g.sensor.y;
+	// A landmark exactly at the sensor has no bearing: keep r away from 0.
+	g.r2 = std::max(g.dx * g.dx + g.dy * g.dy, 1e-12);
+	g.r = std::sqrt(g.r2);
+	return g;
+}
+}  // namespace
+
+// --------------------------------------------------------------------------
+// Pose landmarks
+// --------------------------------------------------------------------------
+MeasurementPrediction CPoseLandmarkModel::predict(
+	const se2::Pose& s, const LandmarkEstimate& l,
+	const LandmarkMeasurement& /*m*/) const
+{
+	const se2::Pose lp = asPose(l);
+	const se2::Pose z = se2::between(s, lp);
+	MeasurementPrediction p;
+	p.zhat = VecN(3);
+	p.zhat << z.x, z.y, z.phi;
+	p.H_robot = se2::jacBetweenA(s, lp);
+	p.H_landmark = se2::jacBetweenB(s, lp);
+	return p;
+}
+
+VecN CPoseLandmarkModel::innovation(
+	const LandmarkMeasurement& m, const VecN& zhat) const
+{
+	VecN nu = m.z - zhat;
+	nu[2] = se2::wrap(nu[2]);
+	return nu;
+}
+
+LandmarkEstimate CPoseLandmarkModel::initialize(
+	const se2::Pose& s, const LandmarkMeasurement& m) const
+{
+	const se2::Pose z{m.z[0], m.z[1], m.z[2]};
+	const Eigen::Matrix3d J = se2::jacComposeB(s, z);
+	LandmarkEstimate l;
+	l.kind = LandmarkKind::Pose;
+	l.mean = se2::toVector(se2::compose(s, z));
+	l.cov = J * Eigen::Matrix3d(m.R) * J.transpose();
+	return l;
+}
+
+CDualProposal CPoseLandmarkModel::dualProposal(
+	const LandmarkEstimate& l, const LandmarkMeasurement& m,
+	const HeadingPrior& /*fully determined by the measurement*/) const
+{
+	const se2::Pose lp = asPose(l);
+	const se2::Pose z{m.z[0], m.z[1], m.z[2]};
+	const se2::Pose zInv = se2::inverse(z);
+	const Eigen::Matrix3d Jl = se2::jacComposeA(lp, zInv);
+	const Eigen::Matrix3d Jz = se2::jacComposeB(lp, zInv) * se2::jacInverse(z);
+	const Eigen::Matrix3d C = Jl * l.cov * Jl.transpose() +
+		Jz * Eigen::Matrix3d(m.R) * Jz.transpose();
+	return CDualProposal(makePoseGaussianProposal(se2::compose(lp, zInv), C));
+}
+
+// --------------------------------------------------------------------------
+// Point landmarks (range-bearing)
+// --------------------------------------------------------------------------
+MeasurementPrediction CPointLandmarkModel::predict(
+	const se2::Pose& s, const LandmarkEstimate& l,
+	const LandmarkMeasurement& m) const
+{
+	const RangeBearingGeometry g = geometry(s, m.sensorPose, l.mean);
+	MeasurementPrediction p;
+	p.zhat = VecN(2);
+	p.zhat << g.r, se2::wrap(std::atan2(g.dy, g.dx) - g.sensor.phi);
+
+	// d h / d sensorPose, then chain through sensor = s (+) sensorPose.
+	Eigen::Matrix<double, 2, 3> H_sensor;
+	H_sensor << -g.dx / g.r, -g.dy / g.r, 0,  //
+		g.dy / g.r2, -g.dx / g.r2, -1;
+	p.H_robot = H_sensor * se2::jacComposeA(s, m.sensorPose);
+
+	p.H_landmark = MatN(2, 2);
+	p.H_landmark << g.dx / g.r, g.dy / g.r,  //
+		-g.dy / g.r2, g.dx / g.r2;
+	return p;
+}
+
+VecN CPointLandmarkModel::innovation(
+	const LandmarkMeasurement& m, const VecN& zhat) const
+{
+	VecN nu = m.z - zhat;
+	nu[1] = se2::wrap(nu[1]);
+	return nu;
+}
+
+LandmarkEstimate CPointLandmarkModel::initialize(
+	const se2::Pose& s, const LandmarkMeasurement& m) const
+{
+	const se2::Pose sensor = se2::compose(s, m.sensorPose);
+	const double r = m.z[0], a = sensor.phi + m.z[1];
+	const double c = std::cos(a), sn = std::sin(a);
+	Eigen::Matrix2d G;
+	G << c, -r * sn,  //
+		sn, r * c;
+	LandmarkEstimate l;
+	l.kind = LandmarkKind::Point;
+	l.mean << sensor.x + r * c, sensor.y + r * sn, 0;
+	l.cov.setZero();
+	l.cov.topLeftCorner<2, 2>() = G * Eigen::Matrix2d(m.R) * G.transpose();
+	return l;
+}
+
+CDualProposal CPointLandmarkModel::dualProposal(
+	const LandmarkEstimate& l, const LandmarkMeasurement& m,
+	const HeadingPrior& headingPrior) const
+{
+	PointRangeBearingProposal p;
+	p.heading = headingPrior;
+	p.landmark = l.mean.head<2>();
+	p.landmarkCov = l.cov.topLeftCorner<2, 2>();
+	p.range = m.z[0];
+	p.bearing = m.z[1];
+	p.rangeBearingCov = Eigen::Matrix2d(m.R);
+	p.sensorPose = m.sensorPose;
+	return CDualProposal(p);
+}
+
+const CLandmarkModel& landmarkModel(LandmarkKind kind)
+{
+	static const CPoseLandmarkModel pose;
+	static const CPointLandmarkModel point;
+	if (kind == LandmarkKind::Pose) return pose;
+	return point;
+}
+
+}  // namespace vslam

@@ -1,0 +1,50 @@
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/models/CMotionModel.h>
+
+#include <cmath>
+
+using namespace vslam;
+using namespace vslam::config;
+
+void CMotionModel::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	sigma_T = readDouble(c, s, "sigma_T", sigma_T, Range::nonNegative());
+	sigma_R = readDouble(c, s, "sigma_R", sigma_R, Range::nonNegative());
+	sigma_R_per_meter = readDouble(
+		c, s, "sigma_R_per_meter", sigma_R_per_meter, Range::nonNegative());
+	min_std_xy = readDouble(c, s, "min_std_xy", min_std_xy, Range::positive());
+	min_std_phi = readDegreesAsRadians(
+		c, s, "min_std_phi_deg", min_std_phi, Range::positive());
+}
+
+void CMotionModel::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "sigma_T", sigma_T, 25, 12,
+		"Translational odometry noise [m/sqrt(m)]: var(x)=var(y)=sigma_T^2*d");
+	c.write(s, "sigma_R", sigma_R, 25, 12,
+		"Rotational odometry noise [rad/sqrt(rad)]: var(th)+=sigma_R^2*|dth|");
+	c.write(s, "sigma_R_per_meter", sigma_R_per_meter, 25, 12,
+		"Heading drift per distance [rad/sqrt(m)]: var(th)+=s^2*d (0: paper)");
+	c.write(s, "min_std_xy", min_std_xy, 25, 12,
+		"Floor on the xy noise of each sampled increment [m]");
+	c.write(s, "min_std_phi_deg", min_std_phi * 180.0 / M_PI, 25, 12,
+		"Floor on the heading noise of each sampled increment [deg]");
+}
+
+Eigen::Matrix3d CMotionModel::incrementCovariance(const se2::Pose& u) const
+{
+	const double d = std::hypot(u.x, u.y);
+	const double varXY = options.sigma_T * options.sigma_T * d;
+	const double varPhi = options.sigma_R * options.sigma_R * std::abs(u.phi) +
+		options.sigma_R_per_meter * options.sigma_R_per_meter * d;
+	return Eigen::Vector3d(varXY, varXY, varPhi).asDiagonal();
+}
+
+Eigen::Matrix3d CMotionModel::covarianceFloor() const
+{
+	const double a = options.min_std_xy * options.min_std_xy;
+	const double b = options.min_std_phi * options.min_std_phi;
+	return Eigen::Vector3d(a, a, b).asDiagonal();
+}

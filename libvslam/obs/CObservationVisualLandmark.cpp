@@ -1,0 +1,65 @@
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <iomanip>
+#include <sstream>
+
+using namespace vslam;
+
+IMPLEMENTS_SERIALIZABLE(CObservationVisualLandmark, mrpt::obs::CObservation, vslam)
+
+uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 0; }
+
+void CObservationVisualLandmark::serializeTo(
+	mrpt::serialization::CArchive& out) const
+{
+	// CObservation does not write its own fields: every class does.
+	out << timestamp << sensorLabel;
+	out << landmarkID << relPose.x() << relPose.y() << relPose.phi();
+	out << ProjErrRMS << NPoints << Slope << sensorPoseOnRobot;
+}
+
+void CObservationVisualLandmark::serializeFrom(
+	mrpt::serialization::CArchive& in, uint8_t version)
+{
+	switch (version)
+	{
+		case 0:
+		{
+			double x = 0, y = 0, phi = 0;
+			in >> timestamp >> sensorLabel;
+			in >> landmarkID >> x >> y >> phi;
+			relPose = mrpt::poses::CPose2D(x, y, phi);
+			in >> ProjErrRMS >> NPoints >> Slope >> sensorPoseOnRobot;
+		}
+		break;
+		default:
+			MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	};
+}
+
+void CObservationVisualLandmark::getDescriptionAsText(std::ostream& o) const
+{
+	CObservation::getDescriptionAsText(o);
+	o << "Visual landmark measurement\n"
+	  << " landmarkID : " << landmarkID << "\n"
+	  << " relPose    : " << relPose << " (dx, dy, dtheta[deg])\n"
+	  << " ProjErrRMS : " << ProjErrRMS << " px\n"
+	  << " NPoints    : " << NPoints << "\n"
+	  << " Slope      : " << Slope << " rad\n"
+	  << " sensorPose : " << sensorPoseOnRobot << "\n";
+}
+
+std::string CObservationVisualLandmark::exportTxtHeader() const
+{
+	return "landmarkID dx dy dtheta ProjErrRMS NPoints Slope";
+}
+
+std::string CObservationVisualLandmark::exportTxtDataRow() const
+{
+	std::ostringstream s;
+	s << std::setprecision(9) << landmarkID << ' ' << relPose.x() << ' '
+	  << relPose.y() << ' ' << relPose.phi() << ' ' << ProjErrRMS << ' '
+	  << NPoints << ' ' << Slope;
+	return s.str();
+}

@@ -1,0 +1,52 @@
+#pragma once
+/** \file CObservationVisualLandmark.h
+ * A visual measurement emitted by the front-end: landmark n was recognized in
+ * the current image, and the landmark frame lies at the relative pose
+ * (dx, dy, dtheta) in the robot frame (x forward, y left, origin on the floor
+ * below the drive-wheel axis), with the paper's three quality statistics.
+ */
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <cstdint>
+
+namespace vslam
+{
+class CObservationVisualLandmark : public mrpt::obs::CObservation
+{
+	DEFINE_SERIALIZABLE(CObservationVisualLandmark, vslam)
+
+   public:
+	CObservationVisualLandmark() = default;
+
+	/** ID of the recognized landmark, as issued by its creation event. */
+	int64_t landmarkID{-1};
+	/** Pose of the landmark frame relative to the robot frame. */
+	mrpt::poses::CPose2D relPose;
+	/** RMS reprojection error of the pose solve (pixels). */
+	double ProjErrRMS{0};
+	/** Number of features matched between the image and the landmark. */
+	uint32_t NPoints{0};
+	/** Robot tilt implied by the 6-DOF solution (rad; ~0 on a level floor). */
+	double Slope{0};
+	/** Camera pose on the robot (informational: relPose is already in the
+	 * robot frame). */
+	mrpt::poses::CPose3D sensorPoseOnRobot;
+
+	void getSensorPose(mrpt::poses::CPose3D& out) const override
+	{
+		out = sensorPoseOnRobot;
+	}
+	void setSensorPose(const mrpt::poses::CPose3D& p) override
+	{
+		sensorPoseOnRobot = p;
+	}
+	void getDescriptionAsText(std::ostream& o) const override;
+
+	bool exportTxtSupported() const override { return true; }
+	std::string exportTxtHeader() const override;
+	std::string exportTxtDataRow() const override;
+};
+
+}  // namespace vslam

@@ -1,0 +1,102 @@
+#include <gtest/gtest.h>
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/rtti/CObject.h>
+#include <mrpt/serialization/CArchive.h>
+
+using namespace vslam;
+
+TEST(Observations, ClassesAreRegisteredAtLoadTime)
+{
+	// No explicit registration call: the library's initializer did it.
+	EXPECT_NE(
+		mrpt::rtti::findRegisteredClass("vslam::CObservationVisualLandmark"),
+		nullptr);
+	EXPECT_NE(
+		mrpt::rtti::findRegisteredClass("vslam::CObservationLandmarkCreated"),
+		nullptr);
+}
+
+TEST(Observations, VisualLandmarkRoundTrip)
+{
+	CObservationVisualLandmark o;
+	o.timestamp = mrpt::Clock::fromDouble(1700000000.25);
+	o.sensorLabel = "VSLAM";
+	o.landmarkID = 1234567890123LL;
+	o.relPose = mrpt::poses::CPose2D(1.5, -0.25, 0.3);
+	o.ProjErrRMS = 1.25;
+	o.NPoints = 42;
+	o.Slope = -0.01;
+	o.sensorPoseOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.3, 0, 0.2, 0);
+
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	buf.Seek(0);
+	auto back = arch.ReadObject<CObservationVisualLandmark>();
+	ASSERT_TRUE(back);
+	EXPECT_EQ(back->timestamp, o.timestamp);
+	EXPECT_EQ(back->sensorLabel, "VSLAM");
+	EXPECT_EQ(back->landmarkID, o.landmarkID);
+	EXPECT_EQ(back->relPose, o.relPose);
+	EXPECT_EQ(back->ProjErrRMS, o.ProjErrRMS);
+	EXPECT_EQ(back->NPoints, o.NPoints);
+	EXPECT_EQ(back->Slope, o.Slope);
+	EXPECT_EQ(back->sensorPoseOnRobot, o.sensorPoseOnRobot);
+	EXPECT_EQ(back->exportTxtDataRow(), o.exportTxtDataRow());
+	EXPECT_EQ(o.exportTxtHeader(), "landmarkID dx dy dtheta ProjErrRMS NPoints Slope");
+}
+
+TEST(Observations, LandmarkCreatedRoundTrip)
+{
+	CObservationLandmarkCreated o;
+	o.landmarkID = 17;
+	o.landmarkPoseInRobot = mrpt::poses::CPose2D(-0.2, 0.01, -0.05);
+	o.landmarkPoseInRobotCov(0, 0) = 1e-4;
+	o.landmarkPoseInRobotCov(0, 2) = o.landmarkPoseInRobotCov(2, 0) = 2e-6;
+	o.NPoints = 80;
+	o.NViews = 3;
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	buf.Seek(0);
+	auto back = arch.ReadObject<CObservationLandmarkCreated>();
+	ASSERT_TRUE(back);
+	EXPECT_EQ(back->landmarkID, 17);
+	EXPECT_EQ(back->landmarkPoseInRobot, o.landmarkPoseInRobot);
+	EXPECT_EQ(back->landmarkPoseInRobotCov, o.landmarkPoseInRobotCov);
+	EXPECT_EQ(back->NPoints, 80u);
+	EXPECT_EQ(back->NViews, 3u);
+}
+
+TEST(Observations, DescriptionAndExportMentionEveryField)
+{
+	CObservationVisualLandmark o;
+	o.landmarkID = 5;
+	o.NPoints = 12;
+	std::ostringstream s;
+	o.getDescriptionAsText(s);
+	for (const char* f : {"landmarkID", "ProjErrRMS", "NPoints", "Slope"})
+		EXPECT_NE(s.str().find(f), std::string::npos) << f;
+	EXPECT_TRUE(o.exportTxtSupported());
+	EXPECT_EQ(o.exportTxtDataRow().substr(0, 2), "5 ");
+}
+
+TEST(Observations, UnknownVersionThrows)
+{
+	// Write a valid object, then corrupt its version byte.
+	CObservationVisualLandmark o;
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	auto* data = static_cast<uint8_t*>(buf.getRawBufferData());
+	const std::string name = "vslam::CObservationVisualLandmark";
+	// Layout: one byte (0x80 | name length), the name, the version byte.
+	ASSERT_EQ(data[0], 0x80 | name.size());
+	const size_t versionPos = 1 + name.size();
+	ASSERT_LT(versionPos, buf.getTotalBytesCount());
+	data[versionPos] = 99;
+	buf.Seek(0);
+	EXPECT_ANY_THROW(arch.ReadObject());
+}
