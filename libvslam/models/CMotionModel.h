@@ -31,9 +31,9 @@ class CMotionModel
 		/** Translational noise, m per sqrt(m) travelled. */
 		double sigma_T = 0.05;
 		/** Rotational noise, rad per sqrt(rad) turned. */
-		double sigma_R = 0.05;
+		double sigma_R = 0.1;
 		/** Heading noise per distance, rad per sqrt(m) (0: paper model). */
-		double sigma_R_per_meter = 0.0;
+		double sigma_R_per_meter = 0.02;
 		/** Tiny floor added to every sampled increment's covariance, so the
 		 * proposal density is defined when the robot stands still. */
 		double min_std_xy = 1e-4;

@@ -1,0 +1,85 @@
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/filter/CKidnapDetector.h>
+
+using namespace vslam;
+using namespace vslam::config;
+
+void CKidnapDetector::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	enabled = readBool(c, s, "enabled", enabled);
+	min_unexplained_frames = static_cast<uint32_t>(readInt(
+		c, s, "min_unexplained_frames", min_unexplained_frames,
+		Range::closed(1, 1e6)));
+	min_distinct_landmarks = static_cast<uint32_t>(readInt(
+		c, s, "min_distinct_landmarks", min_distinct_landmarks,
+		Range::closed(1, 1e6)));
+	single_landmark_frames = static_cast<uint32_t>(readInt(
+		c, s, "single_landmark_frames", single_landmark_frames,
+		Range::closed(0, 1e6)));
+	explained_min_fraction = readDouble(
+		c, s, "explained_min_fraction", explained_min_fraction,
+		{0, 1, false, true});
+}
+
+void CKidnapDetector::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "enabled", enabled, 25, 12, "Detect kidnapping and recover with dual particles");
+	c.write(s, "min_unexplained_frames", static_cast<int>(min_unexplained_frames), 25, 12,
+		"Frames of unexplained anchored measurements that one relocalization hypothesis must explain");
+	c.write(s, "min_distinct_landmarks", static_cast<int>(min_distinct_landmarks), 25, 12,
+		"... involving at least this many different landmarks");
+	c.write(s, "single_landmark_frames", static_cast<int>(single_landmark_frames), 25, 12,
+		"... or this many frames of a single landmark (0: never)");
+	c.write(s, "explained_min_fraction", explained_min_fraction, 25, 12,
+		"Weight fraction of particles whose gate must hold a measurement for it to count as explained");
+}
+
+CKidnapDetector::Verdict CKidnapDetector::update(
+	mrpt::Clock::time_point t, const std::vector<Evidence>& evidence,
+	const Context& ctx)
+{
+	if (!m_verified) m_verified = t;  // landmarks of the first frame anchor
+	if (m_hypothesis.active()) m_hypothesis.predict(ctx.motion, ctx.rng);
+
+	std::vector<KnownMeasurement> anchoredMeasurements;
+	bool anyExplained = false;
+	for (const auto& e : evidence)
+	{
+		if (!anchored(e.created)) continue;
+		anchoredMeasurements.push_back(e.measurement);
+		anyExplained = anyExplained || e.explained;
+	}
+	if (anchoredMeasurements.empty()) return Verdict::Neutral;
+	if (anyExplained)
+	{
+		m_verified = t;
+		m_localized = true;
+		m_hypothesis.clear();
+		return Verdict::Localized;
+	}
+	m_localized = false;
+	if (!options.enabled) return Verdict::Unexplained;
+
+	if (m_hypothesis.active() &&
+		m_hypothesis.explainedFraction(anchoredMeasurements, ctx.likelihood) >=
+			options.explained_min_fraction)
+		m_hypothesis.confirm(anchoredMeasurements, ctx.likelihood, ctx.rng);
+	else
+		m_hypothesis.start(
+			anchoredMeasurements, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng);
+
+	const auto& h = m_hypothesis;
+	const bool confirmed = h.active() &&
+		((h.support() >= options.min_unexplained_frames &&
+		  h.distinctLandmarks() >= options.min_distinct_landmarks) ||
+		 (options.single_landmark_frames > 0 &&
+		  h.support() >= options.single_landmark_frames));
+	if (confirmed)
+	{
+		m_detections++;
+		return Verdict::Kidnapped;
+	}
+	return Verdict::Unexplained;
+}

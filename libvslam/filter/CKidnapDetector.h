@@ -1,0 +1,113 @@
+#pragma once
+/** \file CKidnapDetector.h
+ * Kidnap detection (the paper leaves the criterion open; ours is derived
+ * in doc/mixture-proposal.md).
+ *
+ * Evidence. A measurement is "explained" when it falls inside the
+ * validation gate of particles holding at least `explained_min_fraction`
+ * of the weight, under the predictive distribution (odometry noise
+ * included). Only *anchored* landmarks count: those created no later than
+ * the last frame in which an anchored landmark was explained (at start,
+ * those of the first frame). Landmarks created since were placed from the
+ * current belief, so they explain it by construction; they are neutral.
+ *
+ * Test. At the first frame whose anchored measurements are all
+ * unexplained, a relocalization hypothesis starts: dual particles drawn
+ * from those measurements with a uniform pose prior (the paper's kidnap
+ * mode), carried forward with odometry. Each later frame with unexplained
+ * anchored measurements must be explained by the hypothesis, which is then
+ * reweighted; otherwise the hypothesis restarts from that frame. Kidnapping
+ * is declared when the hypothesis has explained `min_unexplained_frames`
+ * frames over at least `min_distinct_landmarks` landmarks (or
+ * `single_landmark_frames` frames of one landmark) while the filter
+ * explained none. False recognitions are mutually inconsistent, so they
+ * keep restarting the hypothesis instead of confirming it. Any explained
+ * anchored measurement drops the hypothesis.
+ */
+#include <libvslam/filter/CRelocalizationHypothesis.h>
+#include <libvslam/filter/KnownMeasurement.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/Clock.h>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace vslam
+{
+class CKidnapDetector
+{
+   public:
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		bool enabled = true;
+		uint32_t min_unexplained_frames = 3;
+		uint32_t min_distinct_landmarks = 2;
+		/** ... or this many frames when they all measure one landmark
+		 * (0: never). */
+		uint32_t single_landmark_frames = 6;
+		double explained_min_fraction = 0.01;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) const override;
+	};
+
+	/** One measurement of a known landmark in the current frame. */
+	struct Evidence
+	{
+		KnownMeasurement measurement;
+		mrpt::Clock::time_point created{};
+		bool explained = false;
+	};
+
+	/** What the test needs from the filter for one frame. */
+	struct Context
+	{
+		const MotionPrior& motion;  //!< odometry since the previous frame
+		const LandmarkBank& bank;  //!< the best particle's map
+		size_t particles;  //!< size of a hypothesis
+		const CRobustLikelihood& likelihood;
+		mrpt::random::CRandomGenerator& rng;
+	};
+
+	enum class Verdict : uint8_t
+	{
+		Neutral,  //!< no anchored evidence in this frame
+		Localized,  //!< an anchored measurement was explained
+		Unexplained,  //!< anchored evidence, none explained
+		Kidnapped  //!< the hypothesis is confirmed: switch to it
+	};
+
+	CKidnapDetector() = default;
+	explicit CKidnapDetector(const TOptions& o) : options(o) {}
+	TOptions options;
+
+	/** Feeds one frame; call it for every frame, even without evidence. */
+	Verdict update(
+		mrpt::Clock::time_point t, const std::vector<Evidence>& evidence,
+		const Context& ctx);
+
+	/** Whether a landmark created at `created` counts as evidence. */
+	bool anchored(mrpt::Clock::time_point created) const
+	{
+		return m_verified && created <= *m_verified;
+	}
+	/** True unless the latest anchored evidence was unexplained. */
+	bool localized() const { return m_localized; }
+	uint64_t kidnapsDetected() const { return m_detections; }
+	const CRelocalizationHypothesis& hypothesis() const { return m_hypothesis; }
+	/** Drops the hypothesis (after the filter switched to it). */
+	void clearHypothesis() { m_hypothesis.clear(); }
+
+   private:
+	std::optional<mrpt::Clock::time_point> m_verified;
+	bool m_localized = true;
+	uint64_t m_detections = 0;
+	CRelocalizationHypothesis m_hypothesis;
+};
+
+}  // namespace vslam

@@ -1,0 +1,164 @@
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/core/InputError.h>
+#include <libvslam/filter/CMeasurementExtractor.h>
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+
+#include <cmath>
+
+using namespace vslam;
+using namespace vslam::config;
+
+void CMeasurementExtractor::TVisualOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	std_dx = readDouble(c, s, "std_dx", std_dx, Range::positive());
+	std_dy = readDouble(c, s, "std_dy", std_dy, Range::positive());
+	std_dphi = readDegreesAsRadians(c, s, "std_dphi_deg", std_dphi, Range::positive());
+}
+
+void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "std_dx", std_dx, 25, 12, "Visual measurement noise, dx [m] (paper: 0.09)");
+	c.write(s, "std_dy", std_dy, 25, 12, "Visual measurement noise, dy [m] (paper: 0.09)");
+	c.write(s, "std_dphi_deg", std_dphi * 180 / M_PI, 25, 12,
+		"Visual measurement noise, dtheta [deg] (paper: 0.0019 rad^2 = 2.4975 deg)");
+}
+
+void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	std_range = readDouble(c, s, "std_range", std_range, Range::nonNegative());
+	std_bearing = readDegreesAsRadians(
+		c, s, "std_bearing_deg", std_bearing, Range::nonNegative());
+	min_range = readDouble(c, s, "min_range", min_range, Range::nonNegative());
+	max_range = readDouble(c, s, "max_range", max_range, Range::nonNegative());
+}
+
+void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "std_range", std_range, 25, 12,
+		"Range noise [m]; 0: each observation's sensor_std_range");
+	c.write(s, "std_bearing_deg", std_bearing * 180 / M_PI, 25, 12,
+		"Bearing noise [deg]; 0: each observation's sensor_std_yaw");
+	c.write(s, "min_range", min_range, 25, 12, "Ignore ranges below this [m]");
+	c.write(s, "max_range", max_range, 25, 12, "Ignore ranges above this [m] (0: no limit)");
+}
+
+namespace
+{
+bool finite(const mrpt::poses::CPose2D& p)
+{
+	return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.phi());
+}
+
+se2::Pose planar(const mrpt::poses::CPose3D& p) { return {p.x(), p.y(), p.yaw()}; }
+}  // namespace
+
+FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame& sf)
+{
+	FrameMeasurements out;
+	bool haveTime = false;
+	for (const auto& obs : sf)
+	{
+		if (!obs) continue;
+		if (!haveTime)
+		{
+			out.timestamp = obs->timestamp;
+			haveTime = true;
+		}
+		if (auto v = std::dynamic_pointer_cast<CObservationVisualLandmark>(obs))
+		{
+			m_stats.visualSeen++;
+			if (!finite(v->relPose))
+				throw InputError(
+					"visual measurement of landmark " +
+					std::to_string(v->landmarkID) + " has a non-finite pose");
+			switch (preFilter.check(*v))
+			{
+				case CPreFilter::Verdict::RejectedProjErrRMS:
+					m_stats.rejectedProjErrRMS++;
+					continue;
+				case CPreFilter::Verdict::RejectedNPoints:
+					m_stats.rejectedNPoints++;
+					continue;
+				case CPreFilter::Verdict::RejectedSlope:
+					m_stats.rejectedSlope++;
+					continue;
+				case CPreFilter::Verdict::Accepted:
+					break;
+			}
+			m_stats.visualAccepted++;
+			LandmarkMeasurement m;
+			m.key = {LandmarkKind::Pose, v->landmarkID};
+			m.z = VecN(3);
+			m.z << v->relPose.x(), v->relPose.y(), v->relPose.phi();
+			m.R = MatN::Zero(3, 3);
+			m.R.diagonal() << visual.std_dx * visual.std_dx,
+				visual.std_dy * visual.std_dy, visual.std_dphi * visual.std_dphi;
+			out.measurements.push_back(std::move(m));
+		}
+		else if (auto c = std::dynamic_pointer_cast<CObservationLandmarkCreated>(obs))
+		{
+			m_stats.creationsSeen++;
+			if (!finite(c->landmarkPoseInRobot) ||
+				!c->landmarkPoseInRobotCov.asEigen().allFinite())
+				throw InputError(
+					"creation of landmark " + std::to_string(c->landmarkID) +
+					" has a non-finite pose");
+			LandmarkCreation lc;
+			lc.key = {LandmarkKind::Pose, c->landmarkID};
+			lc.relative.key = lc.key;
+			lc.relative.z = VecN(3);
+			lc.relative.z << c->landmarkPoseInRobot.x(), c->landmarkPoseInRobot.y(),
+				c->landmarkPoseInRobot.phi();
+			lc.relative.R = c->landmarkPoseInRobotCov.asEigen();
+			out.creations.push_back(std::move(lc));
+		}
+		else if (auto br = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(obs))
+		{
+			const double stdR = rangeBearing.std_range > 0 ? rangeBearing.std_range
+														   : br->sensor_std_range;
+			const double stdB = rangeBearing.std_bearing > 0
+				? rangeBearing.std_bearing
+				: br->sensor_std_yaw;
+			for (const auto& d : br->sensedData)
+			{
+				m_stats.rangeBearingSeen++;
+				if (!std::isfinite(d.range) || !std::isfinite(d.yaw))
+					throw InputError(
+						"range-bearing measurement of landmark " +
+						std::to_string(d.landmarkID) + " is not finite");
+				if (d.landmarkID < 0)
+				{
+					m_stats.rejectedNoLandmarkID++;
+					continue;
+				}
+				if (d.range < rangeBearing.min_range ||
+					(rangeBearing.max_range > 0 && d.range > rangeBearing.max_range))
+				{
+					m_stats.rejectedRangeLimits++;
+					continue;
+				}
+				if (!(stdR > 0) || !(stdB > 0))
+					throw InputError(
+						"range-bearing observation '" + br->sensorLabel +
+						"' has no noise figure: set [vslam_range_bearing] "
+						"std_range and std_bearing_deg");
+				m_stats.rangeBearingAccepted++;
+				LandmarkMeasurement m;
+				m.key = {LandmarkKind::Point, d.landmarkID};
+				m.z = VecN(2);
+				m.z << d.range, d.yaw;
+				m.R = MatN::Zero(2, 2);
+				m.R.diagonal() << stdR * stdR, stdB * stdB;
+				m.sensorPose = planar(br->sensorLocationOnRobot);
+				out.measurements.push_back(std::move(m));
+			}
+		}
+	}
+	return out;
+}

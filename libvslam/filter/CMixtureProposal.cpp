@@ -1,0 +1,40 @@
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/filter/CMixtureProposal.h>
+
+#include <algorithm>
+
+using namespace vslam;
+using namespace vslam::config;
+
+void CMixtureProposal::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	dual_ratio = readDouble(c, s, "dual_ratio", dual_ratio, Range::closed(0, 1));
+	dual_ratio_max =
+		readDouble(c, s, "dual_ratio_max", dual_ratio_max, Range::closed(0, 1));
+	dynamic_ratio = readBool(c, s, "dynamic_ratio", dynamic_ratio);
+	dual_only_if_sharper =
+		readBool(c, s, "dual_only_if_sharper", dual_only_if_sharper);
+}
+
+void CMixtureProposal::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "dual_ratio", dual_ratio, 25, 12,
+		"Base share of dual particles, [0,1] (paper: 20 of 200 = 0.1)");
+	c.write(s, "dual_ratio_max", dual_ratio_max, 25, 12,
+		"Share reached when no particle explains the measurements (both 0: no duals)");
+	c.write(s, "dynamic_ratio", dynamic_ratio, 25, 12,
+		"Raise the share from dual_ratio to dual_ratio_max as the explained fraction falls");
+	c.write(s, "dual_only_if_sharper", dual_only_if_sharper, 25, 12,
+		"Draw duals only if their position spread is below the predicted cloud's");
+}
+
+double CMixtureProposal::ratio(double explainedFraction, bool dualSharper) const
+{
+	if (options.dual_only_if_sharper && !dualSharper) return 0.0;
+	if (!options.dynamic_ratio) return options.dual_ratio;
+	const double f = std::clamp(explainedFraction, 0.0, 1.0);
+	const double hi = std::max(options.dual_ratio, options.dual_ratio_max);
+	return options.dual_ratio + (hi - options.dual_ratio) * (1.0 - f);
+}

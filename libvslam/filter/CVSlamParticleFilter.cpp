@@ -1,0 +1,492 @@
+#include <libvslam/core/InputError.h>
+#include <libvslam/filter/CVSlamParticleFilter.h>
+#include <libvslam/models/CLandmarkModel.h>
+#include <libvslam/models/MeasurementUpdate.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+using namespace vslam;
+
+CVSlamParticleFilter::CVSlamParticleFilter(const TVSlamFilterOptions& o)
+	: m_options(o),
+	  m_motion(o.motion),
+	  m_likelihood(o.likelihood),
+	  m_mixture(o.mixture),
+	  m_kidnap(o.kidnap),
+	  m_rng(mrpt::random::getRandomGenerator())
+{
+	m_extractor.visual = o.visual;
+	m_extractor.rangeBearing = o.rangeBearing;
+	m_extractor.preFilter.options = o.prefilter;
+	reset();
+}
+
+void CVSlamParticleFilter::reset()
+{
+	const auto& pf = m_options.pf;
+	m_particles.clear();
+	m_particles.resize(pf.sampleSize);
+	for (auto& p : m_particles)
+	{
+		p.log_w = 0;
+		p.d = CVSlamParticle();
+		p.d.pose = pf.initialPose;
+		if (pf.initial_std_xy > 0 || pf.initial_std_phi > 0)
+			p.d.pose = se2::compose(
+				pf.initialPose,
+				{pf.initial_std_xy * m_rng.drawGaussian1D_normalized(),
+				 pf.initial_std_xy * m_rng.drawGaussian1D_normalized(),
+				 pf.initial_std_phi * m_rng.drawGaussian1D_normalized()});
+	}
+	m_index = CLandmarkIndex();
+	m_odometry.reset();
+	m_kidnap = CKidnapDetector(m_options.kidnap);
+	m_stats = TFilterStats();
+	m_lastFrame = TFrameReport();
+}
+
+void CVSlamParticleFilter::setPriorMap(
+	const std::vector<std::pair<LandmarkKey, LandmarkEstimate>>& map,
+	mrpt::Clock::time_point t)
+{
+	LandmarkBank bank = m_particles.empty() ? LandmarkBank() : m_particles[0].d.bank;
+	for (const auto& [key, estimate] : map)
+	{
+		if (m_index.find(key)) throw std::invalid_argument("duplicate landmark in prior map");
+		m_index.add(key, t);
+		bank.push_back(estimate);
+	}
+	for (auto& p : m_particles) p.d.bank = bank;
+}
+
+// --------------------------------------------------------------------------
+// Inputs
+// --------------------------------------------------------------------------
+void CVSlamParticleFilter::addOdometryIncrement(const se2::Pose& u)
+{
+	if (!std::isfinite(u.x) || !std::isfinite(u.y) || !std::isfinite(u.phi))
+		throw InputError("odometry increment is not finite (NaN or inf)");
+	m_odometry.add(u, m_motion.incrementCovariance(u));
+}
+
+void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
+	const mrpt::obs::CActionCollection* action,
+	const mrpt::obs::CSensoryFrame* sf,
+	const mrpt::bayes::CParticleFilter::TParticleFilterOptions& /*o*/)
+{
+	if (action)
+		if (const auto mv = action->getBestMovementEstimation(); mv && mv->poseChange)
+			addOdometryIncrement(mv->poseChange->getMeanVal().asTPose());
+	if (sf) processFrame(m_extractor.extract(*sf));
+}
+
+void CVSlamParticleFilter::processFrame(const FrameMeasurements& frame)
+{
+	if (frame.empty()) return;
+	const auto& pf = m_options.pf;
+	if (pf.measurement_processing == MeasurementProcessing::Joint ||
+		frame.measurements.size() <= 1)
+	{
+		updateWithFrame(frame);
+		return;
+	}
+	// Sequential: one filter update per measurement, resampling in between
+	// (the last one is left to the caller, e.g. CParticleFilter::executeOn).
+	for (size_t k = 0; k < frame.measurements.size(); k++)
+	{
+		FrameMeasurements one;
+		one.timestamp = frame.timestamp;
+		one.measurements = {frame.measurements[k]};
+		const bool last = k + 1 == frame.measurements.size();
+		if (last) one.creations = frame.creations;
+		updateWithFrame(one);
+		if (!last && ESS() < pf.BETA) performResampling(pf.toMrpt());
+	}
+}
+
+// --------------------------------------------------------------------------
+// One update
+// --------------------------------------------------------------------------
+void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
+{
+	m_stats.frames++;
+	m_lastFrame = TFrameReport();
+	m_lastFrame.timestamp = frame.timestamp;
+
+	// Split measurements into known landmarks and first sightings.
+	std::vector<KnownMeasurement> known;
+	std::vector<const LandmarkMeasurement*> firstSightings;
+	for (const auto& m : frame.measurements)
+	{
+		if (const auto slot = m_index.find(m.key))
+			known.push_back({&m, *slot});
+		else if (std::none_of(
+					 firstSightings.begin(), firstSightings.end(),
+					 [&](const auto* f) { return f->key == m.key; }))
+			firstSightings.push_back(&m);
+	}
+	m_lastFrame.measurements = known.size();
+
+	// Which measurements the predicted particle cloud explains, and what the
+	// kidnap test makes of it.
+	const MotionPrior mp(m_odometry, m_motion);
+	Eigen::Matrix2d spreadXY = Eigen::Matrix2d::Zero();
+	if (!known.empty()) explainedFractions(known, mp, spreadXY);
+	const double minFraction = m_options.kidnap.explained_min_fraction;
+	std::vector<CKidnapDetector::Evidence> evidence;
+	double bestFraction = 0;
+	for (const auto& k : known)
+	{
+		evidence.push_back(
+			{k, m_index.entry(k.slot).created, k.explainedFraction >= minFraction});
+		bestFraction = std::max(bestFraction, k.explainedFraction);
+	}
+	m_lastFrame.explainedFraction = bestFraction;
+	const auto verdict = m_kidnap.update(
+		frame.timestamp, evidence,
+		{mp, m_particles[bestParticleIndex()].d.bank, m_particles.size(),
+		 m_likelihood, m_rng});
+	m_stats.unexplainedFrames += verdict == CKidnapDetector::Verdict::Unexplained ||
+		verdict == CKidnapDetector::Verdict::Kidnapped;
+	m_lastFrame.hypothesisSupport = m_kidnap.hypothesis().support();
+
+	std::vector<std::pair<size_t, const LandmarkMeasurement*>> toReinitialize;
+	if (verdict == CKidnapDetector::Verdict::Kidnapped)
+	{
+		// The hypothesis already holds this frame's evidence and motion.
+		switchToRelocalizationHypothesis();
+		for (const auto& k : known)
+			if (m_index.entry(k.slot).suspect) toReinitialize.emplace_back(k.slot, k.m);
+	}
+	else
+	{
+		// Measurements no particle explains are outliers: not used.
+		// Landmarks placed while the robot was lost are re-initialized, and
+		// so is a landmark that keeps being unexplained while the robot is
+		// localized (it was misplaced).
+		std::vector<KnownMeasurement> used;
+		const uint32_t limit = m_options.landmarks.reinit_after_unexplained;
+		for (const auto& k : known)
+		{
+			auto& entry = m_index.entry(k.slot);
+			if (entry.suspect)
+				toReinitialize.emplace_back(k.slot, k.m);
+			else if (k.explainedFraction >= minFraction)
+			{
+				used.push_back(k);
+				entry.unexplainedStreak = 0;
+			}
+			else
+			{
+				m_stats.rejectedUnexplained++;
+				entry.unexplainedStreak++;
+				if (limit > 0 && entry.unexplainedStreak >= limit && m_kidnap.localized())
+					toReinitialize.emplace_back(k.slot, k.m);
+			}
+		}
+		if (used.empty())
+			sampleMotionOnly(mp);
+		else
+			normalUpdate(used, mp, spreadXY, bestFraction);
+	}
+	m_odometry.reset();
+
+	// New landmarks start from each particle's own (new) pose.
+	for (const auto* m : firstSightings)
+	{
+		createLandmark(m->key, *m, frame.timestamp);
+		m_stats.landmarksCreatedFromMeasurement++;
+	}
+	for (const auto& [slot, m] : toReinitialize) reinitializeLandmark(slot, *m, frame.timestamp);
+	const Eigen::Matrix3d initCov = Eigen::Vector3d(
+		m_options.landmarks.init_std_xy * m_options.landmarks.init_std_xy,
+		m_options.landmarks.init_std_xy * m_options.landmarks.init_std_xy,
+		m_options.landmarks.init_std_phi * m_options.landmarks.init_std_phi)
+										.asDiagonal();
+	for (const auto& c : frame.creations)
+	{
+		LandmarkMeasurement rel = c.relative;
+		rel.R = MatN(Eigen::Matrix3d(rel.R) + initCov);
+		if (const auto slot = m_index.find(c.key))
+		{
+			m_stats.duplicateCreations++;
+			reinitializeLandmark(*slot, rel, frame.timestamp);
+		}
+		else
+		{
+			createLandmark(c.key, rel, frame.timestamp);
+			m_stats.landmarksCreated++;
+		}
+	}
+	for (auto& p : m_particles) p.d.path.push(frame.timestamp, p.d.pose);
+	m_lastFrame.essAfterUpdate = ESS();
+}
+
+void CVSlamParticleFilter::switchToRelocalizationHypothesis()
+{
+	// The paper's kidnap mode: only dual particles, importance factors from
+	// a uniform prior. They were drawn and tested by the detector.
+	// They carry the current map of the best particle (which also holds
+	// the landmarks created since the hypothesis started).
+	const auto& h = m_kidnap.hypothesis();
+	const LandmarkBank bank = m_particles[bestParticleIndex()].d.bank;
+	for (size_t i = 0; i < m_particles.size(); i++)
+	{
+		m_particles[i].d.pose = h.poses()[i % h.poses().size()];
+		m_particles[i].d.bank = bank;
+		m_particles[i].log_w = 0;
+	}
+	m_kidnap.clearHypothesis();
+	m_stats.kidnapsDetected++;
+	m_stats.dualParticlesDrawn += m_particles.size();
+	m_lastFrame.kidnapDeclared = true;
+	m_lastFrame.dualRatio = 1;
+	m_lastFrame.dualParticles = m_particles.size();
+	// Landmarks created since the last verified frame were placed from a
+	// pose the robot did not have; streaks so far were the kidnap's doing.
+	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
+		e.unexplainedStreak = 0;
+		if (!m_kidnap.anchored(e.created)) e.suspect = true;
+	});
+}
+
+void CVSlamParticleFilter::sampleMotionOnly(const MotionPrior& mp)
+{
+	if (!mp.moved()) return;
+	for (auto& p : m_particles) p.d.pose = mp.sample(m_rng, p.d.pose);
+}
+
+void CVSlamParticleFilter::explainedFractions(
+	std::vector<KnownMeasurement>& known, const MotionPrior& mp,
+	Eigen::Matrix2d& spreadXY) const
+{
+	const std::vector<double> w = normalizedLinearWeights();
+	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+	Eigen::Matrix2d second = Eigen::Matrix2d::Zero(), motionXY = Eigen::Matrix2d::Zero();
+	for (size_t i = 0; i < m_particles.size(); i++)
+	{
+		const CVSlamParticle& p = m_particles[i].d;
+		const se2::Pose predicted = se2::compose(p.pose, mp.increment());
+		const Eigen::Matrix3d C = mp.globalCov(p.pose);
+		const Eigen::Vector2d xy(predicted.x, predicted.y);
+		mean += w[i] * xy;
+		second += w[i] * xy * xy.transpose();
+		motionXY += w[i] * C.topLeftCorner<2, 2>();
+		for (auto& k : known)
+		{
+			const auto& model = landmarkModel(k.m->kind());
+			const auto e = evaluateMeasurement(model, predicted, p.bank[k.slot], *k.m, &C);
+			if (m_likelihood.inGate(e)) k.explainedFraction += w[i];
+		}
+	}
+	spreadXY = second - mean * mean.transpose() + motionXY;
+}
+
+double CVSlamParticleFilter::weighAndUpdateLandmarks(
+	CVSlamParticle& p, const se2::Pose& s, const std::vector<KnownMeasurement>& used)
+{
+	double logLik = 0;
+	for (const auto& k : used)
+	{
+		const auto& model = landmarkModel(k.m->kind());
+		const auto e = evaluateMeasurement(model, s, p.bank[k.slot], *k.m);
+		logLik += m_likelihood.logLikelihood(e, k.m->kind());
+		// Only the observed landmark's filter is updated, and only if the
+		// measurement passes this particle's validation gate.
+		if (m_likelihood.inGate(e)) kalmanUpdate(p.bank.mutate(k.slot), e);
+	}
+	return logLik;
+}
+
+void CVSlamParticleFilter::normalUpdate(
+	const std::vector<KnownMeasurement>& used, const MotionPrior& mp,
+	const Eigen::Matrix2d& spreadXY, double explainedFraction)
+{
+	const size_t N = m_particles.size();
+	const size_t kStar = mostInformativeMeasurement(used);
+	const LandmarkMeasurement& mStar = *used[kStar].m;
+	const auto& modelStar = landmarkModel(mStar.kind());
+	const double headingStd = std::sqrt(mp.cov()(2, 2));
+	const auto dualFor = [&](const CVSlamParticle& p) {
+		return modelStar.dualProposal(
+			p.bank[used[kStar].slot], mStar,
+			HeadingPrior::Gaussian(se2::compose(p.pose, mp.increment()).phi, headingStd));
+	};
+
+	// The dual ratio for this frame (zero when duals cannot help).
+	double phi = 0;
+	const auto& mo = m_options.mixture;
+	if (mo.dual_ratio > 0 || mo.dual_ratio_max > 0)
+	{
+		const CDualProposal q = dualFor(m_particles[bestParticleIndex()].d);
+		const bool sharper = q.valid() &&
+			q.positionSpread().determinant() < spreadXY.determinant();
+		phi = m_mixture.ratio(explainedFraction, sharper);
+	}
+	const size_t nDual = std::min(N, static_cast<size_t>(std::lround(phi * N)));
+	// With exactly nDual duals in a uniformly random subset, each particle
+	// is dual with probability nDual / N: that is its mixture weight.
+	phi = static_cast<double>(nDual) / static_cast<double>(N);
+	std::vector<char> isDual(N, 0);
+	if (nDual > 0)
+	{
+		std::vector<size_t> order(N);
+		std::iota(order.begin(), order.end(), size_t(0));
+		for (size_t i = 0; i < nDual; i++)  // partial Fisher-Yates
+		{
+			const size_t j = i + m_rng.drawUniform32bit() % (N - i);
+			std::swap(order[i], order[j]);
+			isDual[order[i]] = 1;
+		}
+	}
+	const double logPhi = std::log(phi), log1mPhi = std::log1p(-phi);
+
+	for (size_t i = 0; i < N; i++)
+	{
+		CVSlamParticle& p = m_particles[i].d;
+		const se2::Pose prev = p.pose;
+		se2::Pose s;
+		double logCorrection = 0;  // log p_motion(s) - log q_i(s)
+		if (nDual > 0)
+		{
+			const CDualProposal q = dualFor(p);
+			if (q.valid())
+			{
+				s = isDual[i] ? q.sample(m_rng) : mp.sample(m_rng, prev);
+				const double lm = mp.logDensity(prev, s);
+				logCorrection = lm - logSumExp(log1mPhi + lm, logPhi + q.logDensity(s));
+				m_stats.dualParticlesDrawn += isDual[i];
+			}
+			else
+				s = mp.sample(m_rng, prev);
+		}
+		else
+			s = mp.sample(m_rng, prev);
+		m_particles[i].log_w += weighAndUpdateLandmarks(p, s, used) + logCorrection;
+		p.pose = s;
+	}
+	for (const auto& k : used) m_index.entry(k.slot).measurements++;
+	m_stats.measurementsUsed += used.size();
+	m_lastFrame.used = used.size();
+	m_lastFrame.dualRatio = phi;
+	m_lastFrame.dualParticles = nDual;
+}
+
+void CVSlamParticleFilter::createLandmark(
+	const LandmarkKey& key, const LandmarkMeasurement& rel, mrpt::Clock::time_point t)
+{
+	m_index.add(key, t);
+	const auto& model = landmarkModel(key.kind);
+	for (auto& p : m_particles) p.d.bank.push_back(model.initialize(p.d.pose, rel));
+}
+
+void CVSlamParticleFilter::reinitializeLandmark(
+	size_t slot, const LandmarkMeasurement& m, mrpt::Clock::time_point t)
+{
+	auto& entry = m_index.entry(slot);
+	// Re-placed from the current belief: young again for kidnap evidence.
+	entry.created = t;
+	entry.unexplainedStreak = 0;
+	entry.suspect = false;
+	entry.reinitializations++;
+	m_stats.landmarksReinitialized++;
+	const auto& model = landmarkModel(entry.key.kind);
+	for (auto& p : m_particles) p.d.bank.set(slot, model.initialize(p.d.pose, m));
+}
+
+// --------------------------------------------------------------------------
+// Outputs and CParticleFilterCapable
+// --------------------------------------------------------------------------
+std::vector<double> CVSlamParticleFilter::normalizedLinearWeights() const
+{
+	std::vector<double> w(m_particles.size());
+	double maxW = -std::numeric_limits<double>::infinity();
+	for (const auto& p : m_particles) maxW = std::max(maxW, p.log_w);
+	double sum = 0;
+	for (size_t i = 0; i < w.size(); i++)
+		sum += (w[i] = std::exp(m_particles[i].log_w - maxW));
+	for (auto& x : w) x /= sum;
+	return w;
+}
+
+se2::Pose CVSlamParticleFilter::meanPose() const
+{
+	const std::vector<double> w = normalizedLinearWeights();
+	double x = 0, y = 0, c = 0, s = 0;
+	for (size_t i = 0; i < w.size(); i++)
+	{
+		const se2::Pose q = se2::compose(m_particles[i].d.pose, m_odometry.mean());
+		x += w[i] * q.x;
+		y += w[i] * q.y;
+		c += w[i] * std::cos(q.phi);
+		s += w[i] * std::sin(q.phi);
+	}
+	return {x, y, std::atan2(s, c)};
+}
+
+Eigen::Matrix3d CVSlamParticleFilter::poseCovariance() const
+{
+	const std::vector<double> w = normalizedLinearWeights();
+	se2::Pose mean{0, 0, 0};
+	double c = 0, s = 0;
+	for (size_t i = 0; i < w.size(); i++)
+	{
+		mean.x += w[i] * m_particles[i].d.pose.x;
+		mean.y += w[i] * m_particles[i].d.pose.y;
+		c += w[i] * std::cos(m_particles[i].d.pose.phi);
+		s += w[i] * std::sin(m_particles[i].d.pose.phi);
+	}
+	mean.phi = std::atan2(s, c);
+	Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+	for (size_t i = 0; i < w.size(); i++)
+	{
+		const Eigen::Vector3d d = se2::difference(m_particles[i].d.pose, mean);
+		C += w[i] * d * d.transpose();
+	}
+	return C;
+}
+
+size_t CVSlamParticleFilter::bestParticleIndex() const
+{
+	size_t best = 0;
+	for (size_t i = 1; i < m_particles.size(); i++)
+		if (m_particles[i].log_w > m_particles[best].log_w) best = i;
+	return best;
+}
+
+double CVSlamParticleFilter::normalizeWeights(double* out_max_log_w)
+{
+	if (m_particles.empty()) return 0;
+	double maxW = -std::numeric_limits<double>::infinity();
+	double minW = std::numeric_limits<double>::infinity();
+	for (const auto& p : m_particles)
+	{
+		maxW = std::max(maxW, p.log_w);
+		minW = std::min(minW, p.log_w);
+	}
+	for (auto& p : m_particles) p.log_w -= maxW;
+	if (out_max_log_w) *out_max_log_w = maxW;
+	return std::exp(maxW - minW);
+}
+
+double CVSlamParticleFilter::ESS() const
+{
+	if (m_particles.empty()) return 0;
+	const std::vector<double> w = normalizedLinearWeights();
+	double sum2 = 0;
+	for (double x : w) sum2 += x * x;
+	return sum2 > 0 ? 1.0 / (static_cast<double>(w.size()) * sum2) : 0;
+}
+
+void CVSlamParticleFilter::performSubstitution(const std::vector<size_t>& indx)
+{
+	CParticleFilterDataImpl::performSubstitution(indx);
+	for (auto& p : m_particles) p.log_w = 0;
+	m_stats.resamplings++;
+}

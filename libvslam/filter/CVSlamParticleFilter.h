@@ -1,0 +1,169 @@
+#pragma once
+/** \file CVSlamParticleFilter.h
+ * The vSLAM filter (Karlsson et al. 2005, sections III-C): a particle
+ * filter over robot paths, each particle carrying a copy-on-write bank of
+ * landmark Kalman filters (3-state pose landmarks, 2-state point landmarks),
+ * with the nominal/dual mixture proposal and kidnap recovery.
+ *
+ * It is an MRPT particle filter: drive it with
+ * mrpt::bayes::CParticleFilter::executeOn(filter, action, sf), which calls
+ * prediction_and_update_pfStandardProposal() (our mixture proposal runs in
+ * that slot), normalizes and resamples with MRPT's methods when
+ * ESS < BETA. Tests and benchmarks may call addOdometryIncrement() and
+ * processFrame() directly.
+ *
+ * Odometry is accumulated between frames and sampled once per accumulated
+ * increment. See doc/mixture-proposal.md for the weights and the kidnap
+ * criterion.
+ */
+#include <libvslam/filter/CKidnapDetector.h>
+#include <libvslam/filter/CLandmarkIndex.h>
+#include <libvslam/filter/CMeasurementExtractor.h>
+#include <libvslam/filter/CMixtureProposal.h>
+#include <libvslam/filter/CVSlamParticle.h>
+#include <libvslam/filter/KnownMeasurement.h>
+#include <libvslam/filter/MotionPrior.h>
+#include <libvslam/filter/TVSlamFilterOptions.h>
+#include <libvslam/models/CMotionModel.h>
+#include <libvslam/models/COdometryAccumulator.h>
+#include <libvslam/models/CRobustLikelihood.h>
+#include <mrpt/bayes/CParticleFilterCapable.h>
+#include <mrpt/bayes/CParticleFilterData.h>
+
+#include <cstdint>
+
+namespace mrpt::random
+{
+class CRandomGenerator;
+}
+
+namespace vslam
+{
+/** Counters over a whole run. */
+struct TFilterStats
+{
+	uint64_t frames = 0;
+	uint64_t measurementsUsed = 0;
+	/** Measurements of known landmarks no particle explained (outliers). */
+	uint64_t rejectedUnexplained = 0;
+	uint64_t landmarksCreated = 0;
+	uint64_t landmarksCreatedFromMeasurement = 0;
+	uint64_t landmarksReinitialized = 0;
+	uint64_t duplicateCreations = 0;
+	uint64_t kidnapsDetected = 0;
+	/** Frames whose anchored measurements the filter could not explain
+	 * (a relocalization hypothesis was tested). */
+	uint64_t unexplainedFrames = 0;
+	uint64_t dualParticlesDrawn = 0;
+	uint64_t resamplings = 0;
+};
+
+/** What happened in the last processed frame (for logs and plots). */
+struct TFrameReport
+{
+	mrpt::Clock::time_point timestamp{};
+	size_t measurements = 0;  //!< of known landmarks
+	size_t used = 0;
+	double explainedFraction = 0;
+	/** Support of the relocalization hypothesis under test (0: none). */
+	size_t hypothesisSupport = 0;
+	/** Kidnapping declared: the filter switched to the hypothesis. */
+	bool kidnapDeclared = false;
+	double dualRatio = 0;
+	size_t dualParticles = 0;
+	double essAfterUpdate = 1;
+};
+
+class CVSlamParticleFilter
+	: public mrpt::bayes::CParticleFilterData<
+		  CVSlamParticle, mrpt::bayes::particle_storage_mode::VALUE>,
+	  public mrpt::bayes::CParticleFilterDataImpl<
+		  CVSlamParticleFilter,
+		  mrpt::bayes::CParticleFilterData<
+			  CVSlamParticle,
+			  mrpt::bayes::particle_storage_mode::VALUE>::CParticleList>
+{
+   public:
+	explicit CVSlamParticleFilter(
+		const TVSlamFilterOptions& options = TVSlamFilterOptions());
+
+	/** Particles on the initial pose (spread by its std), empty maps. */
+	void reset();
+	const TVSlamFilterOptions& options() const { return m_options; }
+
+	// ---- inputs ---------------------------------------------------------
+	/** Appends one odometry increment; throws InputError if not finite. */
+	void addOdometryIncrement(const se2::Pose& u);
+	/** Processes the measurements and creation events of one frame. */
+	void processFrame(const FrameMeasurements& frame);
+	/** Seeds every particle with the same prior map (map continuation,
+	 * benchmarks): the bank is shared, O(1) per particle. */
+	void setPriorMap(
+		const std::vector<std::pair<LandmarkKey, LandmarkEstimate>>& map,
+		mrpt::Clock::time_point t = {});
+
+	// ---- outputs --------------------------------------------------------
+	/** Weighted mean pose (circular mean heading), composed with the
+	 * odometry accumulated since the last frame. */
+	se2::Pose meanPose() const;
+	/** Weighted covariance of the particle poses (without pending odometry). */
+	Eigen::Matrix3d poseCovariance() const;
+	size_t bestParticleIndex() const;
+	const CVSlamParticle& particle(size_t i) const { return m_particles.at(i).d; }
+	const CLandmarkIndex& landmarkIndex() const { return m_index; }
+	const TFilterStats& stats() const { return m_stats; }
+	const TFrameReport& lastFrame() const { return m_lastFrame; }
+	const CMeasurementExtractor& extractor() const { return m_extractor; }
+	const COdometryAccumulator& pendingOdometry() const { return m_odometry; }
+	const CKidnapDetector& kidnapDetector() const { return m_kidnap; }
+
+	// ---- CParticleFilterCapable (overridden to avoid the per-call
+	// dynamic_cast of CParticleFilterDataImpl) ------------------------------
+	double getW(size_t i) const override { return m_particles.at(i).log_w; }
+	void setW(size_t i, double w) override { m_particles.at(i).log_w = w; }
+	size_t particlesCount() const override { return m_particles.size(); }
+	double normalizeWeights(double* out_max_log_w = nullptr) override;
+	double ESS() const override;
+	/** MRPT 2.5.8 keeps old weights after resampling (pitfall 1): reset
+	 * them here. */
+	void performSubstitution(const std::vector<size_t>& indx) override;
+
+   protected:
+	void prediction_and_update_pfStandardProposal(
+		const mrpt::obs::CActionCollection* action,
+		const mrpt::obs::CSensoryFrame* observation,
+		const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
+
+   private:
+	TVSlamFilterOptions m_options;
+	CMotionModel m_motion;
+	CRobustLikelihood m_likelihood;
+	CMixtureProposal m_mixture;
+	CKidnapDetector m_kidnap;
+	CMeasurementExtractor m_extractor;
+	CLandmarkIndex m_index;
+	COdometryAccumulator m_odometry;
+	TFilterStats m_stats;
+	TFrameReport m_lastFrame;
+	mrpt::random::CRandomGenerator& m_rng;
+
+	void updateWithFrame(const FrameMeasurements& frame);
+	void switchToRelocalizationHypothesis();
+	void sampleMotionOnly(const MotionPrior& mp);
+	void explainedFractions(
+		std::vector<KnownMeasurement>& known, const MotionPrior& mp,
+		Eigen::Matrix2d& predictedSpreadXY) const;
+	void normalUpdate(
+		const std::vector<KnownMeasurement>& used, const MotionPrior& mp,
+		const Eigen::Matrix2d& predictedSpreadXY, double explainedFraction);
+	double weighAndUpdateLandmarks(
+		CVSlamParticle& p, const se2::Pose& s,
+		const std::vector<KnownMeasurement>& used);
+	void createLandmark(const LandmarkKey& key, const LandmarkMeasurement& rel,
+		mrpt::Clock::time_point t);
+	void reinitializeLandmark(
+		size_t slot, const LandmarkMeasurement& m, mrpt::Clock::time_point t);
+	std::vector<double> normalizedLinearWeights() const;
+};
+
+}  // namespace vslam

@@ -1,0 +1,128 @@
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/filter/TVSlamFilterOptions.h>
+
+using namespace vslam;
+using namespace vslam::config;
+using mrpt::bayes::CParticleFilter;
+
+namespace
+{
+const std::vector<std::string> kResamplingNames = {
+	"prMultinomial", "prResidual", "prStratified", "prSystematic"};
+const std::vector<std::string> kProcessingNames = {"joint", "sequential"};
+}  // namespace
+
+CParticleFilter::TParticleFilterOptions TParticleFilterOptions::toMrpt() const
+{
+	CParticleFilter::TParticleFilterOptions o;
+	o.PF_algorithm = CParticleFilter::pfStandardProposal;
+	o.adaptiveSampleSize = false;
+	o.sampleSize = sampleSize;
+	o.BETA = BETA;
+	o.resamplingMethod = resamplingMethod;
+	return o;
+}
+
+void TParticleFilterOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	sampleSize = static_cast<uint32_t>(
+		readInt(c, s, "sampleSize", sampleSize, Range::closed(1, 1e7)));
+	BETA = readDouble(c, s, "BETA", BETA, Range::closed(0, 1));
+	resamplingMethod =
+		static_cast<CParticleFilter::TParticleResamplingAlgorithm>(readChoice(
+			c, s, "resamplingMethod", static_cast<size_t>(resamplingMethod),
+			kResamplingNames));
+	measurement_processing = static_cast<MeasurementProcessing>(readChoice(
+		c, s, "measurement_processing",
+		static_cast<size_t>(measurement_processing), kProcessingNames));
+	initialPose.x = readDouble(c, s, "initial_x", initialPose.x);
+	initialPose.y = readDouble(c, s, "initial_y", initialPose.y);
+	initialPose.phi = readDegreesAsRadians(c, s, "initial_phi_deg", initialPose.phi);
+	initial_std_xy =
+		readDouble(c, s, "initial_std_xy", initial_std_xy, Range::nonNegative());
+	initial_std_phi = readDegreesAsRadians(
+		c, s, "initial_std_phi_deg", initial_std_phi, Range::nonNegative());
+}
+
+void TParticleFilterOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "sampleSize", static_cast<int>(sampleSize), 25, 12,
+		"Number of particles");
+	c.write(s, "BETA", BETA, 25, 12, "Resample when ESS < BETA, in [0,1]");
+	c.write(s, "resamplingMethod", kResamplingNames.at(resamplingMethod), 25, 12,
+		"prMultinomial | prResidual | prStratified | prSystematic");
+	c.write(s, "measurement_processing",
+		kProcessingNames.at(static_cast<size_t>(measurement_processing)), 25, 12,
+		"joint (one weight per image) | sequential (one update per measurement)");
+	c.write(s, "initial_x", initialPose.x, 25, 12, "Initial robot pose x [m]");
+	c.write(s, "initial_y", initialPose.y, 25, 12, "Initial robot pose y [m]");
+	c.write(s, "initial_phi_deg", initialPose.phi * 180 / M_PI, 25, 12,
+		"Initial robot heading [deg]");
+	c.write(s, "initial_std_xy", initial_std_xy, 25, 12,
+		"Initial spread of the particles [m] (0: all on the initial pose)");
+	c.write(s, "initial_std_phi_deg", initial_std_phi * 180 / M_PI, 25, 12,
+		"Initial heading spread [deg]");
+}
+
+void TLandmarkOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	init_std_xy = readDouble(c, s, "init_std_xy", init_std_xy, Range::nonNegative());
+	init_std_phi = readDegreesAsRadians(
+		c, s, "init_std_phi_deg", init_std_phi, Range::nonNegative());
+	reinit_after_unexplained = static_cast<uint32_t>(readInt(
+		c, s, "reinit_after_unexplained", reinit_after_unexplained,
+		Range::closed(0, 1e6)));
+}
+
+void TLandmarkOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "init_std_xy", init_std_xy, 25, 12,
+		"Extra std of a new visual landmark's frame vs. the creating pose [m]");
+	c.write(s, "init_std_phi_deg", init_std_phi * 180 / M_PI, 25, 12,
+		"Extra heading std of a new visual landmark's frame [deg]");
+	c.write(s, "reinit_after_unexplained", static_cast<int>(reinit_after_unexplained), 25, 12,
+		"Re-initialize a landmark after this many consecutive unexplained measurements while localized (0: never)");
+}
+
+void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
+{
+	pf.loadFromConfigFile(c, kParticleFilter);
+	motion.loadFromConfigFile(c, kMotionModel);
+	likelihood.loadFromConfigFile(c, kLikelihood);
+	mixture.loadFromConfigFile(c, kMixture);
+	kidnap.loadFromConfigFile(c, kKidnap);
+	landmarks.loadFromConfigFile(c, kLandmarks);
+	visual.loadFromConfigFile(c, kVisual);
+	rangeBearing.loadFromConfigFile(c, kRangeBearing);
+	prefilter.loadFromConfigFile(c, kPreFilter);
+}
+
+void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
+{
+	pf.saveToConfigFile(c, kParticleFilter);
+	motion.saveToConfigFile(c, kMotionModel);
+	likelihood.saveToConfigFile(c, kLikelihood);
+	mixture.saveToConfigFile(c, kMixture);
+	kidnap.saveToConfigFile(c, kKidnap);
+	landmarks.saveToConfigFile(c, kLandmarks);
+	visual.saveToConfigFile(c, kVisual);
+	rangeBearing.saveToConfigFile(c, kRangeBearing);
+	prefilter.saveToConfigFile(c, kPreFilter);
+}
+
+void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
+{
+	k.addFromOptions(pf, kParticleFilter);
+	k.addFromOptions(motion, kMotionModel);
+	k.addFromOptions(likelihood, kLikelihood);
+	k.addFromOptions(mixture, kMixture);
+	k.addFromOptions(kidnap, kKidnap);
+	k.addFromOptions(landmarks, kLandmarks);
+	k.addFromOptions(visual, kVisual);
+	k.addFromOptions(rangeBearing, kRangeBearing);
+	k.addFromOptions(prefilter, kPreFilter);
+}

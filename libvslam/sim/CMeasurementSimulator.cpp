@@ -1,0 +1,293 @@
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <libvslam/sim/CMeasurementSimulator.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <cmath>
+
+using namespace vslam;
+using Opt = TMeasurementSimOptions;
+
+namespace
+{
+struct VisualLandmark
+{
+	int64_t id;
+	se2::Pose createdAt;  //!< true robot pose at creation
+	se2::Pose frame;  //!< the frame the front-end actually measures
+	Eigen::Vector2d scene;  //!< centre of the landmark's scene
+};
+
+/** How a landmark's scene is seen from pose p: 0 if not recognizable, else
+ * a quality in (0, 1] falling with viewpoint and scale change. */
+double viewQuality(const Opt& o, const VisualLandmark& l, const se2::Pose& p)
+{
+	const Eigen::Vector2d toScene = l.scene - Eigen::Vector2d(p.x, p.y);
+	const Eigen::Vector2d orig = l.scene - Eigen::Vector2d(l.createdAt.x, l.createdAt.y);
+	const double bearing = se2::wrap(std::atan2(toScene[1], toScene[0]) - p.phi);
+	if (std::abs(bearing) > 0.5 * o.camera_fov * 0.6) return 0;  // central part
+	const double viewChange = std::abs(se2::wrap(
+		std::atan2(toScene[1], toScene[0]) - std::atan2(orig[1], orig[0])));
+	if (viewChange > o.max_view_change) return 0;
+	const double scale = toScene.norm() / orig.norm();
+	const double logScale = std::abs(std::log(scale));
+	if (logScale > std::log(o.max_scale_change)) return 0;
+	return (1 - viewChange / std::max(o.max_view_change, 1e-9)) *
+		(1 - logScale / std::max(std::log(o.max_scale_change), 1e-9));
+}
+
+/** Drives towards goals: turn in place when far off, else go and steer. */
+class GoalDriver
+{
+   public:
+	GoalDriver(const Opt& o, mrpt::random::CRandomGenerator& rng) : m_o(o), m_rng(rng) {}
+
+	se2::Pose start()
+	{
+		if (m_o.path_type == Opt::PathType::Waypoints)
+		{
+			const se2::Pose p{m_o.waypoints[0], m_o.waypoints[1], 0};
+			m_next = 1;
+			m_goal = waypoint(m_next);
+			return {p.x, p.y, std::atan2(m_goal[1] - p.y, m_goal[0] - p.x)};
+		}
+		m_goal = randomGoal();
+		return {m_o.room_width / 2, m_o.room_height / 2, 0};
+	}
+
+	/** The true motion increment for one period from pose p. */
+	se2::Pose step(const se2::Pose& p)
+	{
+		if (std::hypot(m_goal[0] - p.x, m_goal[1] - p.y) < 0.1) nextGoal();
+		const double err =
+			se2::wrap(std::atan2(m_goal[1] - p.y, m_goal[0] - p.x) - p.phi);
+		const double maxTurn = m_o.max_turn_rate * m_o.dt;
+		const double turn = std::clamp(err, -maxTurn, maxTurn);
+		const double forward =
+			std::abs(err) > 0.5 ? 0.0 : m_o.speed * m_o.dt * std::cos(err);
+		return {forward, 0, turn};
+	}
+
+	Eigen::Vector2d randomGoal()
+	{
+		const double m = m_o.wall_margin;
+		return {m_rng.drawUniform(m, m_o.room_width - m),
+				m_rng.drawUniform(m, m_o.room_height - m)};
+	}
+
+   private:
+	const Opt& m_o;
+	mrpt::random::CRandomGenerator& m_rng;
+	Eigen::Vector2d m_goal;
+	size_t m_next = 0;
+
+	Eigen::Vector2d waypoint(size_t i) const
+	{
+		const size_t n = m_o.waypoints.size() / 2;
+		return {m_o.waypoints[2 * (i % n)], m_o.waypoints[2 * (i % n) + 1]};
+	}
+	void nextGoal()
+	{
+		if (m_o.path_type == Opt::PathType::Waypoints)
+			m_goal = waypoint(++m_next);
+		else
+			m_goal = randomGoal();
+	}
+};
+
+double gauss(mrpt::random::CRandomGenerator& rng, double std)
+{
+	return std * rng.drawGaussian1D_normalized();
+}
+}  // namespace
+
+SimulatedRun CMeasurementSimulator::run() const
+{
+	const Opt& o = m_options;
+	mrpt::random::CRandomGenerator rng(o.seed);
+	GoalDriver driver(o, rng);
+	SimulatedRun out;
+
+	std::vector<VisualLandmark> visual;
+	std::vector<Eigen::Vector2d> points;
+	if (o.landmark_type == Opt::LandmarkType::RangeBearing)
+		for (uint32_t i = 0; i < o.point_landmarks; i++)
+		{
+			points.emplace_back(
+				rng.drawUniform(0, o.room_width), rng.drawUniform(0, o.room_height));
+			out.landmarks.push_back(
+				{{LandmarkKind::Point, int64_t(i + 1)},
+				 {points.back()[0], points.back()[1], 0},
+				 true});
+		}
+
+	mrpt::poses::CPose3D rbSensorPose(0.1, 0.0, 0.2, 0, 0, 0);
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionOpts;
+	const size_t mappingSteps = static_cast<size_t>(std::floor(o.mapping_duration / o.dt));
+	const size_t steps = mappingSteps + static_cast<size_t>(std::floor(o.duration / o.dt));
+	const size_t framePeriod =
+		std::max<size_t>(1, static_cast<size_t>(std::lround(1.0 / (o.camera_rate * o.dt))));
+	size_t nextKidnap = 0;
+	std::vector<double> kidnaps = o.kidnap_times;
+	std::sort(kidnaps.begin(), kidnaps.end());
+
+	se2::Pose pose = driver.start();
+	for (size_t k = 1; k <= steps; k++)
+	{
+		SimulatedStep st;
+		const bool recorded = k > mappingSteps;
+		const double tSec = kStartTime + (k - mappingSteps) * o.dt;
+		st.t = mrpt::Clock::fromDouble(tSec);
+
+		// True motion and what odometry reports.
+		const se2::Pose u = driver.step(pose);
+		const double d = std::abs(u.x), a = std::abs(u.phi);
+		const double sT = o.odo_sigma_T * std::sqrt(d);
+		const double sR = std::sqrt(
+			o.odo_sigma_R * o.odo_sigma_R * a +
+			o.odo_sigma_R_per_meter * o.odo_sigma_R_per_meter * d);
+		st.odometryIncrement = {
+			u.x * (1 + o.odo_scale_bias) + gauss(rng, sT), gauss(rng, sT),
+			u.phi * (1 + o.odo_turn_bias) + gauss(rng, sR)};
+		pose = se2::compose(pose, u);
+		if (o.slip_probability > 0 && rng.drawUniform(0, 1) < o.slip_probability)
+			pose = se2::compose(pose, {gauss(rng, o.slip_std), gauss(rng, o.slip_std), 0});
+		pose.x = std::clamp(pose.x, 0.0, o.room_width);
+		pose.y = std::clamp(pose.y, 0.0, o.room_height);
+		if (recorded && nextKidnap < kidnaps.size() &&
+			(k - mappingSteps) * o.dt >= kidnaps[nextKidnap])
+		{
+			nextKidnap++;
+			se2::Pose to;
+			do
+			{
+				const Eigen::Vector2d g = driver.randomGoal();
+				to = {g[0], g[1], rng.drawUniform(-M_PI, M_PI)};
+			} while (std::hypot(to.x - pose.x, to.y - pose.y) < o.kidnap_min_distance &&
+					 o.kidnap_min_distance <
+						 std::hypot(o.room_width, o.room_height) - 2 * o.wall_margin);
+			pose = to;
+			st.kidnappedHere = true;
+		}
+		st.truePose = pose;
+
+		st.action = mrpt::obs::CActionCollection::Create();
+		mrpt::obs::CActionRobotMovement2D mv;
+		mv.computeFromOdometry(mrpt::poses::CPose2D(st.odometryIncrement), motionOpts);
+		mv.timestamp = st.t;
+		st.action->insert(mv);
+		st.sf = mrpt::obs::CSensoryFrame::Create();
+
+		if (k % framePeriod == 0)
+		{
+			if (o.landmark_type == Opt::LandmarkType::Visual)
+			{
+				bool recognizedAny = false, nearSimilar = false;
+				for (const auto& l : visual)
+				{
+					const double dist = std::hypot(pose.x - l.createdAt.x, pose.y - l.createdAt.y);
+					const double ang = std::abs(se2::wrap(pose.phi - l.createdAt.phi));
+					if (dist < o.creation_min_distance && ang < o.creation_min_angle)
+						nearSimilar = true;
+					const double quality = viewQuality(o, l, pose);
+					if (quality <= 0) continue;
+					if (rng.drawUniform(0, 1) >= o.recognition_probability) continue;
+					recognizedAny = true;
+					auto m = CObservationVisualLandmark::Create();
+					m->timestamp = st.t;
+					m->sensorLabel = "CAMERA";
+					m->landmarkID = l.id;
+					se2::Pose z = se2::between(pose, l.frame);
+					if (rng.drawUniform(0, 1) < o.bad_measurement_probability)
+					{
+						out.badMeasurements += recorded;
+						z = {z.x + gauss(rng, 0.5), z.y + gauss(rng, 0.5),
+							 se2::wrap(z.phi + gauss(rng, 0.35))};
+						m->ProjErrRMS = rng.drawUniform(3.5, 10.0);
+						m->NPoints = static_cast<uint32_t>(rng.drawUniform(3, 30));
+						m->Slope = gauss(rng, 0.2);
+					}
+					else
+					{
+						z = {z.x + gauss(rng, o.meas_std_dx), z.y + gauss(rng, o.meas_std_dy),
+							 se2::wrap(z.phi + gauss(rng, o.meas_std_dphi))};
+						m->ProjErrRMS = std::abs(0.8 + gauss(rng, 0.4));
+						m->NPoints = static_cast<uint32_t>(
+							15 + 60 * quality * rng.drawUniform(0.7, 1.0));
+						m->Slope = gauss(rng, 0.02);
+						if (visual.size() > 1 &&
+							rng.drawUniform(0, 1) < o.false_recognition_probability)
+						{
+							out.falseRecognitions += recorded;
+							int64_t other;
+							do
+								other = visual[rng.drawUniform32bit() % visual.size()].id;
+							while (other == l.id);
+							m->landmarkID = other;
+						}
+					}
+					m->relPose = mrpt::poses::CPose2D(z);
+					st.sf->insert(m);
+					out.visualMeasurements += recorded;
+				}
+				if (!recognizedAny && !nearSimilar)
+				{
+					VisualLandmark l;
+					l.id = static_cast<int64_t>(visual.size() + 1);
+					l.createdAt = pose;
+					l.frame = se2::compose(
+						pose, {gauss(rng, o.landmark_frame_std_xy),
+							   gauss(rng, o.landmark_frame_std_xy),
+							   gauss(rng, o.landmark_frame_std_phi)});
+					const double depth = rng.drawUniform(o.scene_depth_min, o.scene_depth_max);
+					l.scene = {pose.x + depth * std::cos(pose.phi), pose.y + depth * std::sin(pose.phi)};
+					visual.push_back(l);
+					out.landmarks.push_back({{LandmarkKind::Pose, l.id}, l.frame, !recorded});
+					auto c = CObservationLandmarkCreated::Create();
+					c->timestamp = st.t;
+					c->sensorLabel = "CAMERA";
+					c->landmarkID = l.id;
+					c->NPoints = 100;
+					c->NViews = 3;
+					if (recorded)
+					{
+						st.sf->insert(c);
+						out.creations++;
+					}
+				}
+			}
+			else
+			{
+				auto br = mrpt::obs::CObservationBearingRange::Create();
+				br->timestamp = st.t;
+				br->sensorLabel = "RB";
+				br->sensorLocationOnRobot = rbSensorPose;
+				br->maxSensorDistance = static_cast<float>(o.rb_max_range);
+				br->fieldOfView_yaw = static_cast<float>(o.rb_fov);
+				br->sensor_std_range = static_cast<float>(o.rb_std_range);
+				br->sensor_std_yaw = static_cast<float>(o.rb_std_bearing);
+				const se2::Pose sensor = se2::compose(
+					pose, {rbSensorPose.x(), rbSensorPose.y(), rbSensorPose.yaw()});
+				for (size_t i = 0; i < points.size(); i++)
+				{
+					const double dx = points[i][0] - sensor.x, dy = points[i][1] - sensor.y;
+					const double r = std::hypot(dx, dy);
+					const double b = se2::wrap(std::atan2(dy, dx) - sensor.phi);
+					if (r > o.rb_max_range || std::abs(b) > o.rb_fov / 2) continue;
+					mrpt::obs::CObservationBearingRange::TMeasurement m;
+					m.range = static_cast<float>(r + gauss(rng, o.rb_std_range));
+					m.yaw = static_cast<float>(se2::wrap(b + gauss(rng, o.rb_std_bearing)));
+					m.pitch = 0;
+					m.landmarkID = static_cast<int32_t>(i + 1);
+					br->sensedData.push_back(m);
+					out.rangeBearingMeasurements += recorded;
+				}
+				if (!br->sensedData.empty()) st.sf->insert(br);
+			}
+		}
+		if (recorded) out.steps.push_back(std::move(st));
+	}
+	return out;
+}

@@ -1,0 +1,59 @@
+#pragma once
+/** \file ScenarioRunner.h
+ * Runs the filter over a simulated run through MRPT's
+ * CParticleFilter::executeOn, as the app does, and reports position errors
+ * against ground truth for the filter and for dead reckoning. */
+#include <libvslam/filter/CVSlamParticleFilter.h>
+#include <libvslam/sim/CMeasurementSimulator.h>
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace vslam::testing
+{
+struct ScenarioResult
+{
+	std::vector<double> filterError, odometryError;  //!< per step, metres
+	std::vector<se2::Pose> estimates;
+	double rmse(const std::vector<double>& e, size_t from = 0) const
+	{
+		double s = 0;
+		for (size_t i = from; i < e.size(); i++) s += e[i] * e[i];
+		return std::sqrt(s / std::max<size_t>(1, e.size() - from));
+	}
+	double filterRmse() const { return rmse(filterError); }
+	double odometryRmse() const { return rmse(odometryError); }
+	static double median(std::vector<double> e)
+	{
+		std::nth_element(e.begin(), e.begin() + e.size() / 2, e.end());
+		return e[e.size() / 2];
+	}
+};
+
+inline ScenarioResult runScenario(
+	const SimulatedRun& run, TVSlamFilterOptions opts, uint32_t seed = 1)
+{
+	mrpt::random::getRandomGenerator().randomize(seed);
+	opts.pf.initialPose = run.steps.front().truePose;
+	// The first step's motion happened before truePose[0]: start one step
+	// earlier is not known, so start at the first true pose and skip step 0.
+	CVSlamParticleFilter filter(opts);
+	mrpt::bayes::CParticleFilter pf;
+	pf.m_options = opts.pf.toMrpt();
+	ScenarioResult r;
+	se2::Pose odo = run.steps.front().truePose;
+	for (size_t i = 1; i < run.steps.size(); i++)
+	{
+		const auto& st = run.steps[i];
+		pf.executeOn(filter, st.action.get(), st.sf.get());
+		odo = se2::compose(odo, st.odometryIncrement);
+		const se2::Pose est = filter.meanPose();
+		r.estimates.push_back(est);
+		r.filterError.push_back(std::hypot(est.x - st.truePose.x, est.y - st.truePose.y));
+		r.odometryError.push_back(std::hypot(odo.x - st.truePose.x, odo.y - st.truePose.y));
+	}
+	return r;
+}
+}  // namespace vslam::testing
