@@ -1,3 +1,4 @@
+#include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
 #include <libvslam/models/CLandmarkModel.h>
@@ -81,8 +82,7 @@ void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
 	const mrpt::bayes::CParticleFilter::TParticleFilterOptions& /*o*/)
 {
 	if (action)
-		if (const auto mv = action->getBestMovementEstimation(); mv && mv->poseChange)
-			addOdometryIncrement(mv->poseChange->getMeanVal().asTPose());
+		if (const auto u = odometryIncrement(*action)) addOdometryIncrement(u->asTPose());
 	if (sf) processFrame(m_extractor.extract(*sf));
 }
 

@@ -12,9 +12,9 @@
  * with d = |(dx, dy)|: a random walk in both translation and rotation
  * (holonomic drive: translation noise isotropic). Variances grow linearly
  * with the motion, so splitting one increment into many gives the same
- * total noise. sigma_R_per_meter (default 0) models heading drift on
- * straight runs (unequal wheel diameters); at 0 the model is the paper's
- * pure two-parameter model.
+ * total noise. sigma_R_per_meter models heading drift on straight runs
+ * (unequal wheel diameters), which a real robot always has; set it to 0
+ * for the paper's pure two-parameter model.
  */
 #include <libvslam/models/SE2.h>
 #include <mrpt/config/CLoadableOptions.h>
@@ -32,7 +32,7 @@ class CMotionModel
 		double sigma_T = 0.05;
 		/** Rotational noise, rad per sqrt(rad) turned. */
 		double sigma_R = 0.1;
-		/** Heading noise per distance, rad per sqrt(m) (0: paper model). */
+		/** Heading drift per distance, rad per sqrt(m) (0: paper model). */
 		double sigma_R_per_meter = 0.02;
 		/** Tiny floor added to every sampled increment's covariance, so the
 		 * proposal density is defined when the robot stands still. */

@@ -1,0 +1,32 @@
+#pragma once
+/** \file AbsoluteTrajectoryError.h
+ * ATE as in Sturm et al. 2012 (TUM RGB-D benchmark), planar: every
+ * estimated pose is associated with the ground truth interpolated at its
+ * timestamp; the statistic is over the translational (xy) errors, raw or
+ * after the least-squares SE(2) alignment of the estimate onto the truth. */
+#include <libvslam/eval/Trajectory.h>
+
+#include <cstddef>
+
+namespace vslam
+{
+struct AteStats
+{
+	size_t associated = 0;  //!< estimated poses with ground truth
+	double rmse = 0, mean = 0, median = 0, max = 0;
+	double headingRmse = 0;  //!< rad
+	std::vector<double> errors;  //!< per associated pose, in time order
+};
+
+struct AteOptions
+{
+	/** Longest ground-truth gap to interpolate across (s). */
+	double maxGap = 0.5;
+	/** Align the estimate onto the truth with the best SE(2) first. */
+	bool align = false;
+};
+
+AteStats computeAte(
+	const Trajectory& estimate, const Trajectory& groundTruth,
+	const AteOptions& options = {});
+}  // namespace vslam

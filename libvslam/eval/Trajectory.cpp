@@ -1,0 +1,128 @@
+#include <libvslam/core/InputError.h>
+#include <libvslam/eval/Trajectory.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace vslam
+{
+namespace
+{
+std::vector<std::vector<double>> readNumericRows(
+	const std::string& file, const std::string& commentChars)
+{
+	std::ifstream in(file);
+	if (!in) throw InputError("cannot open trajectory file '" + file + "'");
+	std::vector<std::vector<double>> rows;
+	std::string line;
+	size_t lineNo = 0;
+	while (std::getline(in, line))
+	{
+		lineNo++;
+		const auto b = line.find_first_not_of(" \t\r");
+		if (b == std::string::npos || commentChars.find(line[b]) != std::string::npos)
+			continue;
+		std::istringstream ls(line);
+		std::vector<double> row;
+		std::string tok;
+		while (ls >> tok)
+		{
+			char* end = nullptr;
+			const double v = std::strtod(tok.c_str(), &end);
+			if (*end != '\0' || !std::isfinite(v))
+				throw InputError(
+					"trajectory file '" + file + "', line " + std::to_string(lineNo) +
+					": '" + tok + "' is not a finite number");
+			row.push_back(v);
+		}
+		if (!rows.empty() && row.size() != rows.front().size())
+			throw InputError(
+				"trajectory file '" + file + "', line " + std::to_string(lineNo) +
+				": " + std::to_string(row.size()) + " columns, expected " +
+				std::to_string(rows.front().size()));
+		rows.push_back(std::move(row));
+	}
+	return rows;
+}
+
+void sortByTime(Trajectory& t)
+{
+	std::stable_sort(t.begin(), t.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+}
+}  // namespace
+
+Trajectory readTumTrajectory(const std::string& file)
+{
+	Trajectory out;
+	for (const auto& r : readNumericRows(file, "#%"))
+	{
+		if (r.size() != 8)
+			throw InputError("'" + file + "' is not a TUM trajectory (8 columns expected)");
+		// Yaw of the quaternion (qx, qy, qz, qw) = (r4..r7).
+		const double yaw = std::atan2(
+			2 * (r[7] * r[6] + r[4] * r[5]), 1 - 2 * (r[5] * r[5] + r[6] * r[6]));
+		out.push_back({r[0], {r[1], r[2], yaw}});
+	}
+	sortByTime(out);
+	return out;
+}
+
+Trajectory readRbpfSlamPath(const std::string& file)
+{
+	Trajectory out;
+	for (const auto& r : readNumericRows(file, "#%"))
+	{
+		if (r.size() != 8)
+			throw InputError(
+				"'" + file + "' is not an rbpf-slam path (8 columns: step x y z yaw pitch roll t)");
+		out.push_back({r[7], {r[1], r[2], r[4]}});
+	}
+	sortByTime(out);
+	return out;
+}
+
+Trajectory readTrajectory(const std::string& file)
+{
+	// Both formats have 8 columns: rbpf-slam's first column is an integer
+	// step counter and its last a timestamp; TUM's first is a timestamp.
+	const auto rows = readNumericRows(file, "#%");
+	if (rows.empty()) return {};
+	const bool rbpf = std::all_of(rows.begin(), rows.end(), [](const auto& r) {
+		return r.size() == 8 && r[0] == std::floor(r[0]) && r[0] >= 0 && r[0] < 1e8;
+	});
+	return rbpf ? readRbpfSlamPath(file) : readTumTrajectory(file);
+}
+
+void writeTumTrajectory(const std::string& file, const Trajectory& trajectory)
+{
+	FILE* f = std::fopen(file.c_str(), "wt");
+	if (!f) throw InputError("cannot write '" + file + "'");
+	std::fprintf(f, "# timestamp x y z qx qy qz qw\n");
+	for (const auto& p : trajectory)
+	{
+		double q[4];
+		yawToQuaternion(p.pose.phi, q);
+		std::fprintf(f, "%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", p.t, p.pose.x,
+			p.pose.y, 0.0, q[0], q[1], q[2], q[3]);
+	}
+	std::fclose(f);
+}
+
+std::optional<se2::Pose> interpolate(const Trajectory& tr, double t, double maxGap)
+{
+	if (tr.empty() || t < tr.front().t || t > tr.back().t) return std::nullopt;
+	const auto it = std::lower_bound(
+		tr.begin(), tr.end(), t, [](const TimedPose& p, double v) { return p.t < v; });
+	if (it->t == t) return it->pose;
+	const auto& b = *it;
+	const auto& a = *(it - 1);
+	if (b.t - a.t > maxGap) return std::nullopt;
+	const double s = (t - a.t) / (b.t - a.t);
+	return se2::Pose{a.pose.x + s * (b.pose.x - a.pose.x),
+					 a.pose.y + s * (b.pose.y - a.pose.y),
+					 se2::wrap(a.pose.phi + s * se2::wrap(b.pose.phi - a.pose.phi))};
+}
+}  // namespace vslam

@@ -1,0 +1,46 @@
+#pragma once
+/** \file Trajectory.h
+ * A timestamped planar trajectory and the file formats users compare:
+ * TUM ("timestamp x y z qx qy qz qw", Sturm et al. 2012) and rbpf-slam's
+ * log_estimated_path.txt ("step x y z yaw pitch roll timestamp"). */
+#include <libvslam/models/SE2.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vslam
+{
+struct TimedPose
+{
+	double t = 0;  //!< UNIX seconds
+	se2::Pose pose;
+};
+
+using Trajectory = std::vector<TimedPose>;
+
+/** Reads a TUM trajectory (lines starting with '#' are comments). Throws
+ * InputError naming the file and line on malformed input. */
+Trajectory readTumTrajectory(const std::string& file);
+/** Reads rbpf-slam's log_estimated_path.txt ('%' comments). */
+Trajectory readRbpfSlamPath(const std::string& file);
+/** Reads either format, told apart by the number of columns. */
+Trajectory readTrajectory(const std::string& file);
+
+void writeTumTrajectory(const std::string& file, const Trajectory& trajectory);
+
+/** The pose at time t, linearly interpolated (shortest-arc heading);
+ * nullopt outside the trajectory or across a gap longer than maxGap s. */
+std::optional<se2::Pose> interpolate(
+	const Trajectory& sortedByTime, double t, double maxGap);
+
+/** Quaternion (qx, qy, qz, qw) of a rotation about z. */
+inline void yawToQuaternion(double yaw, double q[4])
+{
+	q[0] = 0;
+	q[1] = 0;
+	q[2] = std::sin(yaw / 2);
+	q[3] = std::cos(yaw / 2);
+}
+}  // namespace vslam

@@ -1,0 +1,57 @@
+#include <gtest/gtest.h>
+#include <libvslam/core/InputError.h>
+#include <libvslam/eval/Trajectory.h>
+#include <tests/support/TempDir.h>
+
+#include <fstream>
+
+using namespace vslam;
+
+TEST(Trajectory, TumRoundTripAndFormatDetection)
+{
+	vslam::testing::TempDir dir;
+	Trajectory tr;
+	for (int i = 0; i < 10; i++) tr.push_back({1700000000.0 + 0.5 * i, {0.1 * i, 1.0, -3.0 + 0.6 * i}});
+	writeTumTrajectory(dir.file("a.tum"), tr);
+	const Trajectory back = readTrajectory(dir.file("a.tum"));
+	ASSERT_EQ(back.size(), tr.size());
+	for (size_t i = 0; i < tr.size(); i++)
+	{
+		EXPECT_NEAR(back[i].t, tr[i].t, 1e-6);
+		EXPECT_NEAR(back[i].pose.x, tr[i].pose.x, 1e-6);
+		EXPECT_NEAR(se2::wrap(back[i].pose.phi - tr[i].pose.phi), 0, 1e-6);
+	}
+	std::ofstream(dir.file("r.txt")) << "0 1.0 2.0 0 0.5 0 0 1700000000.5\n"
+									 << "1 1.5 2.0 0 0.6 0 0 1700000001.5\n";
+	const Trajectory r = readTrajectory(dir.file("r.txt"));
+	ASSERT_EQ(r.size(), 2u);
+	EXPECT_NEAR(r[1].t, 1700000001.5, 1e-6);
+	EXPECT_NEAR(r[1].pose.phi, 0.6, 1e-12);
+}
+
+TEST(Trajectory, InterpolationUsesTheShortestArc)
+{
+	const Trajectory tr = {{0, {0, 0, 3.0}}, {1, {1, 0, -3.0}}};
+	const auto p = interpolate(tr, 0.5, 2.0);
+	ASSERT_TRUE(p);
+	EXPECT_NEAR(p->x, 0.5, 1e-12);
+	EXPECT_NEAR(std::abs(p->phi), M_PI, 1e-9);
+	EXPECT_FALSE(interpolate(tr, 1.5, 2.0));
+	EXPECT_FALSE(interpolate(tr, 0.5, 0.5));  // gap too long
+}
+
+TEST(Trajectory, MalformedFilesNameTheLine)
+{
+	vslam::testing::TempDir dir;
+	std::ofstream(dir.file("bad.tum")) << "# header\n1 2 3 4 5 6 7 8\n1 2 x 4 5 6 7 8\n";
+	try
+	{
+		readTumTrajectory(dir.file("bad.tum"));
+		FAIL();
+	}
+	catch (const InputError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
+	}
+	EXPECT_THROW(readTumTrajectory(dir.file("missing.tum")), InputError);
+}

@@ -1,0 +1,136 @@
+#include <gtest/gtest.h>
+#include <libvslam/filter/CKidnapDetector.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <tests/support/Measurements.h>
+
+using namespace vslam;
+using vslam::testing::poseMeasurement;
+using V = CKidnapDetector::Verdict;
+
+namespace
+{
+/** Two pose landmarks; the robot is really at kTrue. */
+class KidnapDetectorTest : public ::testing::Test
+{
+   protected:
+	const se2::Pose kTrue{5, 5, 0};
+	const se2::Pose kL1{6, 5, 0}, kL2{5, 6.5, M_PI / 2};
+	LandmarkBank bank;
+	CMotionModel model;
+	COdometryAccumulator noMotion;
+	CRobustLikelihood likelihood;
+	std::vector<LandmarkMeasurement> storage;  // owns what evidence points to
+	const mrpt::Clock::time_point t0 = mrpt::Clock::fromDouble(100);
+
+	void SetUp() override
+	{
+		mrpt::random::getRandomGenerator().randomize(5);
+		for (const auto& p : {kL1, kL2})
+		{
+			LandmarkEstimate l;
+			l.mean = se2::toVector(p);
+			l.cov = Eigen::Matrix3d::Identity() * 1e-4;
+			bank.push_back(l);
+		}
+		storage.reserve(100);
+	}
+	mrpt::Clock::time_point at(double s) const
+	{
+		return t0 + std::chrono::microseconds(static_cast<int64_t>(s * 1e6));
+	}
+	CKidnapDetector::Evidence seen(size_t slot, const se2::Pose& z, bool explained,
+		mrpt::Clock::time_point created)
+	{
+		storage.push_back(poseMeasurement(int64_t(slot + 1), z, 0.05, 0.02));
+		return {{&storage.back(), slot, 0}, created, explained};
+	}
+	CKidnapDetector::Verdict feed(CKidnapDetector& d, double t,
+		const std::vector<CKidnapDetector::Evidence>& ev)
+	{
+		const MotionPrior mp(noMotion, model);
+		return d.update(at(t), ev, {mp, bank, 300, likelihood,
+								   mrpt::random::getRandomGenerator()});
+	}
+};
+}  // namespace
+
+TEST_F(KidnapDetectorTest, FirstFrameAnchorsAndYoungLandmarksAreNeutral)
+{
+	CKidnapDetector d;
+	EXPECT_EQ(feed(d, 0, {}), V::Neutral);
+	EXPECT_TRUE(d.anchored(at(0)));
+	EXPECT_FALSE(d.anchored(at(1)));
+	// A young landmark's unexplained measurement is no evidence.
+	EXPECT_EQ(feed(d, 2, {seen(0, se2::between(kTrue, kL1), false, at(1))}), V::Neutral);
+	// An anchored landmark explained: everything older becomes anchored.
+	EXPECT_EQ(feed(d, 3, {seen(0, se2::between(kTrue, kL1), true, at(0))}), V::Localized);
+	EXPECT_TRUE(d.anchored(at(2.5)));
+	EXPECT_TRUE(d.localized());
+}
+
+TEST_F(KidnapDetectorTest, ConsistentUnexplainedFramesDeclareAKidnapping)
+{
+	CKidnapDetector d;
+	feed(d, 0, {});
+	const auto z1 = se2::between(kTrue, kL1), z2 = se2::between(kTrue, kL2);
+	EXPECT_EQ(feed(d, 1, {seen(0, z1, false, at(0))}), V::Unexplained);
+	EXPECT_FALSE(d.localized());
+	EXPECT_EQ(d.hypothesis().support(), 1u);
+	EXPECT_EQ(feed(d, 2, {seen(1, z2, false, at(0))}), V::Unexplained);
+	EXPECT_EQ(d.hypothesis().support(), 2u);
+	EXPECT_EQ(feed(d, 3, {seen(0, z1, false, at(0))}), V::Kidnapped);
+	EXPECT_EQ(d.kidnapsDetected(), 1u);
+	// The hypothesis sits on the true pose.
+	double x = 0, y = 0;
+	for (const auto& p : d.hypothesis().poses()) x += p.x, y += p.y;
+	x /= d.hypothesis().poses().size();
+	y /= d.hypothesis().poses().size();
+	EXPECT_NEAR(x, kTrue.x, 0.05);
+	EXPECT_NEAR(y, kTrue.y, 0.05);
+}
+
+TEST_F(KidnapDetectorTest, InconsistentFalseRecognitionsNeverConfirm)
+{
+	CKidnapDetector d;
+	feed(d, 0, {});
+	mrpt::random::CRandomGenerator rng(9);
+	for (int f = 1; f <= 20; f++)
+	{
+		const se2::Pose z{rng.drawUniform(-3, 3), rng.drawUniform(-3, 3),
+						  rng.drawUniform(-3, 3)};
+		EXPECT_EQ(feed(d, f, {seen(f % 2, z, false, at(0))}), V::Unexplained);
+		EXPECT_LE(d.hypothesis().support(), 2u);
+	}
+	EXPECT_EQ(d.kidnapsDetected(), 0u);
+}
+
+TEST_F(KidnapDetectorTest, OneLandmarkNeedsMoreFrames)
+{
+	CKidnapDetector d;
+	feed(d, 0, {});
+	const auto z1 = se2::between(kTrue, kL1);
+	for (int f = 1; f < 6; f++)
+		EXPECT_EQ(feed(d, f, {seen(0, z1, false, at(0))}), V::Unexplained) << f;
+	EXPECT_EQ(feed(d, 6, {seen(0, z1, false, at(0))}), V::Kidnapped);
+}
+
+TEST_F(KidnapDetectorTest, AnExplainedAnchoredMeasurementDropsTheHypothesis)
+{
+	CKidnapDetector d;
+	feed(d, 0, {});
+	const auto z1 = se2::between(kTrue, kL1);
+	feed(d, 1, {seen(0, z1, false, at(0))});
+	feed(d, 2, {seen(0, z1, false, at(0))});
+	EXPECT_EQ(feed(d, 3, {seen(1, {0, 0, 0}, true, at(0))}), V::Localized);
+	EXPECT_FALSE(d.hypothesis().active());
+}
+
+TEST_F(KidnapDetectorTest, DisabledDetectorNeverDeclares)
+{
+	CKidnapDetector d;
+	d.options.enabled = false;
+	feed(d, 0, {});
+	for (int f = 1; f < 10; f++)
+		EXPECT_EQ(feed(d, f, {seen(f % 2, se2::between(kTrue, f % 2 ? kL2 : kL1), false, at(0))}),
+				  V::Unexplained);
+}

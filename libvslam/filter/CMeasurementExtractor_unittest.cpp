@@ -1,0 +1,119 @@
+#include <gtest/gtest.h>
+#include <libvslam/core/InputError.h>
+#include <libvslam/filter/CMeasurementExtractor.h>
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+
+#include <cmath>
+
+using namespace vslam;
+
+namespace
+{
+CObservationVisualLandmark::Ptr visual(int64_t id, double projErr, uint32_t n)
+{
+	auto o = CObservationVisualLandmark::Create();
+	o->landmarkID = id;
+	o->relPose = mrpt::poses::CPose2D(1.0, 0.5, 0.2);
+	o->ProjErrRMS = projErr;
+	o->NPoints = n;
+	return o;
+}
+
+mrpt::obs::CObservationBearingRange::Ptr bearingRange()
+{
+	auto o = mrpt::obs::CObservationBearingRange::Create();
+	o->sensorLocationOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.3, 0.05, 0, 0);
+	o->sensor_std_range = 0.1f;
+	o->sensor_std_yaw = 0.01f;
+	for (int32_t id : {7, -1, 8})
+	{
+		mrpt::obs::CObservationBearingRange::TMeasurement m;
+		m.range = id == 8 ? 20.f : 2.f;
+		m.yaw = 0.3f;
+		m.pitch = 0;
+		m.landmarkID = id;
+		o->sensedData.push_back(m);
+	}
+	return o;
+}
+}  // namespace
+
+TEST(CMeasurementExtractor, VisualMeasurementsGoThroughThePreFilter)
+{
+	CMeasurementExtractor ex;
+	mrpt::obs::CSensoryFrame sf;
+	sf.insert(visual(1, 1.0, 40));
+	sf.insert(visual(2, 4.0, 40));  // ProjErrRMS too large
+	sf.insert(visual(3, 1.0, 3));  // too few points
+	auto c = CObservationLandmarkCreated::Create();
+	c->landmarkID = 9;
+	sf.insert(c);
+	const FrameMeasurements f = ex.extract(sf);
+	ASSERT_EQ(f.measurements.size(), 1u);
+	EXPECT_EQ(f.measurements[0].key.id, 1);
+	EXPECT_EQ(f.measurements[0].kind(), LandmarkKind::Pose);
+	EXPECT_NEAR(f.measurements[0].z[1], 0.5, 1e-12);
+	EXPECT_NEAR(f.measurements[0].R(0, 0), 0.09 * 0.09, 1e-12);
+	EXPECT_NEAR(f.measurements[0].R(2, 2), 0.0019, 1e-9);  // paper's Sigma_vis
+	ASSERT_EQ(f.creations.size(), 1u);
+	EXPECT_EQ(f.creations[0].key.id, 9);
+	EXPECT_EQ(ex.stats().visualSeen, 3u);
+	EXPECT_EQ(ex.stats().rejectedProjErrRMS, 1u);
+	EXPECT_EQ(ex.stats().rejectedNPoints, 1u);
+}
+
+TEST(CMeasurementExtractor, RangeBearingWithIdsSensorPoseAndLimits)
+{
+	CMeasurementExtractor ex;
+	ex.rangeBearing.max_range = 10;
+	mrpt::obs::CSensoryFrame sf;
+	sf.insert(bearingRange());
+	const FrameMeasurements f = ex.extract(sf);
+	ASSERT_EQ(f.measurements.size(), 1u);
+	const auto& m = f.measurements[0];
+	EXPECT_EQ(m.key.id, 7);
+	EXPECT_EQ(m.kind(), LandmarkKind::Point);
+	EXPECT_NEAR(m.sensorPose.x, 0.1, 1e-12);
+	EXPECT_NEAR(m.sensorPose.phi, 0.05, 1e-9);
+	EXPECT_NEAR(m.R(0, 0), 0.01, 1e-7);  // from the observation
+	EXPECT_EQ(ex.stats().rejectedNoLandmarkID, 1u);
+	EXPECT_EQ(ex.stats().rejectedRangeLimits, 1u);
+	ex.rangeBearing.std_range = 0.5;  // the INI overrides the observation
+	EXPECT_NEAR(ex.extract(sf).measurements[0].R(0, 0), 0.25, 1e-12);
+}
+
+TEST(CMeasurementExtractor, NonFiniteInputIsAnInputError)
+{
+	CMeasurementExtractor ex;
+	mrpt::obs::CSensoryFrame sf;
+	auto v = visual(1, 1.0, 40);
+	v->relPose = mrpt::poses::CPose2D(std::nan(""), 0, 0);
+	sf.insert(v);
+	EXPECT_THROW(ex.extract(sf), InputError);
+
+	mrpt::obs::CSensoryFrame sf2;
+	auto br = bearingRange();
+	br->sensedData[0].range = std::numeric_limits<float>::infinity();
+	sf2.insert(br);
+	EXPECT_THROW(ex.extract(sf2), InputError);
+}
+
+TEST(CMeasurementExtractor, RangeBearingWithoutAnyNoiseFigureIsAnError)
+{
+	CMeasurementExtractor ex;
+	mrpt::obs::CSensoryFrame sf;
+	auto br = bearingRange();
+	br->sensor_std_range = 0;
+	sf.insert(br);
+	try
+	{
+		ex.extract(sf);
+		FAIL();
+	}
+	catch (const InputError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("std_range"), std::string::npos);
+	}
+}

@@ -1,0 +1,248 @@
+#include <gtest/gtest.h>
+#include <libvslam/core/InputError.h>
+#include <libvslam/filter/CVSlamParticleFilter.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <tests/support/Measurements.h>
+
+#include <Eigen/LU>
+#include <cmath>
+
+using namespace vslam;
+using namespace vslam::testing;
+
+namespace
+{
+LandmarkEstimate poseLandmark(const se2::Pose& p, double var = 1e-4)
+{
+	LandmarkEstimate l;
+	l.kind = LandmarkKind::Pose;
+	l.mean = se2::toVector(p);
+	l.cov = Eigen::Matrix3d::Identity() * var;
+	return l;
+}
+
+/** Weighted mean and covariance of the particle poses. */
+void weightedMoments(const CVSlamParticleFilter& f, Eigen::Vector3d& mean, Eigen::Matrix3d& cov)
+{
+	std::vector<double> w;
+	double sum = 0;
+	for (size_t i = 0; i < f.particlesCount(); i++) sum += w.emplace_back(std::exp(f.getW(i)));
+	mean.setZero();
+	for (size_t i = 0; i < w.size(); i++) mean += w[i] / sum * se2::toVector(f.particle(i).pose);
+	cov.setZero();
+	for (size_t i = 0; i < w.size(); i++)
+	{
+		const Eigen::Vector3d d = se2::toVector(f.particle(i).pose) - mean;
+		cov += w[i] / sum * d * d.transpose();
+	}
+}
+
+TVSlamFilterOptions manyParticles(size_t n)
+{
+	TVSlamFilterOptions o;
+	o.pf.sampleSize = static_cast<uint32_t>(n);
+	o.kidnap.enabled = false;
+	return o;
+}
+}  // namespace
+
+TEST(CVSlamParticleFilter, ResamplingResetsTheWeights)
+{
+	// MRPT 2.5.8 keeps old weights after resampling (pitfall 1).
+	mrpt::random::getRandomGenerator().randomize(1);
+	CVSlamParticleFilter f(manyParticles(50));
+	for (size_t i = 0; i < 50; i++) f.setW(i, -0.1 * i);
+	EXPECT_LT(f.ESS(), 0.5);
+	f.performResampling(f.options().pf.toMrpt());
+	EXPECT_DOUBLE_EQ(f.ESS(), 1.0);
+	for (size_t i = 0; i < 50; i++) EXPECT_EQ(f.getW(i), 0.0);
+	EXPECT_EQ(f.stats().resamplings, 1u);
+}
+
+class MixturePosterior : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(MixturePosterior, MatchesTheAnalyticPosteriorForAnyDualRatio)
+{
+	// One update with a known landmark: the weighted particles must match
+	// the Gaussian posterior whatever share of them is dual. This is the
+	// test that nominal and dual importance factors are consistent.
+	const double phi = GetParam();
+	auto o = manyParticles(20000);
+	o.motion.sigma_T = 0.3;
+	o.motion.sigma_R = 0.3;
+	o.motion.sigma_R_per_meter = 0.1;
+	o.mixture.dual_ratio = o.mixture.dual_ratio_max = phi;
+	o.mixture.dynamic_ratio = false;
+	o.mixture.dual_only_if_sharper = false;
+	o.likelihood.outlier_probability = 1e-9;
+	mrpt::random::getRandomGenerator().randomize(3);
+	CVSlamParticleFilter f(o);
+	const se2::Pose landmark{2, 0.5, 0.3};
+	LandmarkEstimate l = poseLandmark(landmark);
+	l.cov.diagonal() << 0.01, 0.01, 0.001;
+	f.setPriorMap({{{LandmarkKind::Pose, 1}, l}});
+	f.addOdometryIncrement({1, 0, 0});
+	const Eigen::Matrix3d P0 =
+		MotionPrior(f.pendingOdometry(), CMotionModel(o.motion)).globalCov({0, 0, 0});
+	const se2::Pose truth{1.2, -0.1, 0.05};
+	const auto m = poseMeasurement(1, se2::between(truth, landmark), 0.06, 0.035);
+	f.processFrame(frame(1, {m}));
+	EXPECT_EQ(f.lastFrame().dualParticles, static_cast<size_t>(phi * 20000));
+
+	// Gauss-Newton on the linearized problem.
+	Eigen::Vector3d x(1, 0, 0), prior(1, 0, 0);
+	Eigen::Matrix3d C;
+	for (int it = 0; it < 10; it++)
+	{
+		const se2::Pose s = se2::fromVector(x);
+		const Eigen::Matrix3d Hs = se2::jacBetweenA(s, landmark);
+		const Eigen::Matrix3d Hl = se2::jacBetweenB(s, landmark);
+		const Eigen::Matrix3d R = Eigen::Matrix3d(m.R) + Hl * l.cov * Hl.transpose();
+		const Eigen::Vector3d nu = se2::difference(
+			{m.z[0], m.z[1], m.z[2]}, se2::between(s, landmark));
+		const Eigen::Matrix3d info = P0.inverse() + Hs.transpose() * R.inverse() * Hs;
+		x += info.inverse() * (P0.inverse() * (prior - x) + Hs.transpose() * R.inverse() * nu);
+		C = info.inverse();
+	}
+	Eigen::Vector3d mean;
+	Eigen::Matrix3d cov;
+	weightedMoments(f, mean, cov);
+	for (int i = 0; i < 3; i++)
+	{
+		EXPECT_NEAR(mean[i], x[i], 0.1 * std::sqrt(C(i, i))) << i;
+		EXPECT_NEAR(cov(i, i), C(i, i), 0.1 * C(i, i)) << i;
+	}
+	// Duals sharpen the proposal: the weights get more even.
+	if (phi >= 0.5) EXPECT_GT(f.ESS(), 0.4);
+}
+
+INSTANTIATE_TEST_SUITE_P(DualRatios, MixturePosterior, ::testing::Values(0.0, 0.5, 1.0));
+
+TEST(CVSlamParticleFilter, OnlyTheObservedLandmarkIsUpdated)
+{
+	mrpt::random::getRandomGenerator().randomize(2);
+	CVSlamParticleFilter f(manyParticles(100));
+	std::vector<std::pair<LandmarkKey, LandmarkEstimate>> map;
+	for (int i = 0; i < 300; i++)
+		map.push_back({{LandmarkKind::Pose, i}, poseLandmark({i * 0.1, 1, 0}, 0.01)});
+	f.setPriorMap(map);
+	const LandmarkBank before = f.particle(0).bank;
+	f.addOdometryIncrement({0.1, 0, 0});
+	f.processFrame(frame(1, {poseMeasurement(7, se2::between({0.1, 0, 0}, {0.7, 1, 0}))}));
+	for (size_t i = 0; i < f.particlesCount(); i++)
+	{
+		const LandmarkBank& bank = f.particle(i).bank;
+		for (int k = 0; k < 300; k++)
+			if (k != 7)
+				EXPECT_EQ(bank[k].mean, before[k].mean);
+		EXPECT_LT(bank[7].cov(0, 0), before[7].cov(0, 0));
+		// Copy-on-write: only the path to slot 7 is new.
+		EXPECT_EQ(bank.nodesNotIn(before), before.levels() + 1u);
+	}
+}
+
+TEST(CVSlamParticleFilter, ResampledParticlesShareTheirBanks)
+{
+	mrpt::random::getRandomGenerator().randomize(4);
+	CVSlamParticleFilter f(manyParticles(64));
+	f.processFrame(frame(0, {}, {creation(1)}));
+	for (size_t i = 0; i < 64; i++) f.setW(i, i == 5 ? 0.0 : -50.0);
+	f.performResampling(f.options().pf.toMrpt());
+	for (size_t i = 1; i < 64; i++)
+		EXPECT_TRUE(f.particle(i).bank.sharesRootWith(f.particle(0).bank));
+}
+
+TEST(CVSlamParticleFilter, NewLandmarksStartFromEachParticlesOwnPose)
+{
+	auto o = manyParticles(50);
+	o.pf.initial_std_xy = 0.5;
+	o.pf.initial_std_phi = 0.3;
+	o.landmarks.init_std_xy = 0.01;
+	mrpt::random::getRandomGenerator().randomize(6);
+	CVSlamParticleFilter f(o);
+	f.processFrame(frame(0, {}, {creation(42)}));
+	ASSERT_TRUE(f.landmarkIndex().find({LandmarkKind::Pose, 42}));
+	for (size_t i = 0; i < 50; i++)
+	{
+		const auto& l = f.particle(i).bank[0];
+		EXPECT_TRUE(l.mean.isApprox(se2::toVector(f.particle(i).pose), 1e-12));
+		EXPECT_NEAR(l.cov(0, 0), 0.01 * 0.01, 1e-12);
+	}
+	EXPECT_EQ(f.stats().landmarksCreated, 1u);
+}
+
+TEST(CVSlamParticleFilter, OdometryIsSampledOncePerAccumulatedIncrement)
+{
+	// 200 small increments then one update: the cloud's spread must be the
+	// accumulated model covariance, not more.
+	auto o = manyParticles(20000);
+	mrpt::random::getRandomGenerator().randomize(7);
+	CVSlamParticleFilter f(o);
+	for (int i = 0; i < 100; i++) f.addOdometryIncrement({0.01, 0, 0.005});
+	for (int i = 0; i < 100; i++) f.addOdometryIncrement({0.01, 0, -0.005});
+	const MotionPrior mp(f.pendingOdometry(), CMotionModel(o.motion));
+	const Eigen::Matrix3d expected = mp.globalCov({0, 0, 0});
+	f.processFrame(frame(1, {}, {creation(1)}));  // samples the motion
+	Eigen::Vector3d mean;
+	Eigen::Matrix3d cov;
+	weightedMoments(f, mean, cov);
+	for (int i = 0; i < 3; i++) EXPECT_NEAR(cov(i, i), expected(i, i), 0.05 * expected(i, i));
+	EXPECT_NEAR(mean[0], mp.increment().x, 0.01);
+}
+
+TEST(CVSlamParticleFilter, UnexplainedMeasurementsAreRejectedAndCounted)
+{
+	mrpt::random::getRandomGenerator().randomize(8);
+	CVSlamParticleFilter f(manyParticles(100));
+	f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark({2, 0, 0})}});
+	const LandmarkBank before = f.particle(0).bank;
+	// The landmark measured 3 m off: no particle explains it.
+	f.processFrame(frame(1, {poseMeasurement(1, {-1, 0, 0})}));
+	EXPECT_EQ(f.stats().rejectedUnexplained, 1u);
+	EXPECT_EQ(f.stats().measurementsUsed, 0u);
+	EXPECT_EQ(f.particle(0).bank[0].mean, before[0].mean);
+	f.processFrame(frame(2, {poseMeasurement(1, {2, 0, 0})}));
+	EXPECT_EQ(f.stats().measurementsUsed, 1u);
+}
+
+TEST(CVSlamParticleFilter, SequentialProcessingUpdatesOncePerMeasurement)
+{
+	auto o = manyParticles(100);
+	o.pf.measurement_processing = MeasurementProcessing::Sequential;
+	mrpt::random::getRandomGenerator().randomize(9);
+	CVSlamParticleFilter f(o);
+	f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark({2, 0, 0})},
+				   {{LandmarkKind::Pose, 2}, poseLandmark({0, 2, 1.5})}});
+	f.processFrame(frame(1, {poseMeasurement(1, {2, 0, 0}), poseMeasurement(2, {0, 2, 1.5})}));
+	EXPECT_EQ(f.stats().frames, 2u);
+	EXPECT_EQ(f.stats().measurementsUsed, 2u);
+}
+
+TEST(CVSlamParticleFilter, NonFiniteOdometryIsAnInputError)
+{
+	CVSlamParticleFilter f(manyParticles(10));
+	EXPECT_THROW(f.addOdometryIncrement({std::nan(""), 0, 0}), InputError);
+	EXPECT_THROW(f.addOdometryIncrement({0, 0, INFINITY}), InputError);
+}
+
+TEST(CVSlamParticleFilter, SameSeedSameResult)
+{
+	const auto runOnce = [] {
+		mrpt::random::getRandomGenerator().randomize(10);
+		CVSlamParticleFilter f(manyParticles(200));
+		f.processFrame(frame(0, {}, {creation(1)}));
+		for (int k = 1; k < 30; k++)
+		{
+			f.addOdometryIncrement({0.05, 0, 0.02});
+			f.processFrame(frame(k, {poseMeasurement(1, se2::inverse({0.05 * k, 0, 0.02 * k}))}));
+			if (f.ESS() < 0.5) f.performResampling(f.options().pf.toMrpt());
+		}
+		return f.meanPose();
+	};
+	const se2::Pose a = runOnce(), b = runOnce();
+	EXPECT_EQ(a.x, b.x);
+	EXPECT_EQ(a.y, b.y);
+	EXPECT_EQ(a.phi, b.phi);
+}

@@ -1,0 +1,63 @@
+#include <libvslam/core/InputError.h>
+#include <libvslam/io/CCheckedGzInputStream.h>
+#include <zlib.h>
+
+#include <climits>
+#include <filesystem>
+
+using namespace vslam;
+
+CCheckedGzInputStream::CCheckedGzInputStream(const std::string& fileName)
+	: m_fileName(fileName)
+{
+	std::error_code ec;
+	if (!std::filesystem::is_regular_file(fileName, ec))
+		throw InputError("cannot open '" + fileName + "': no such file");
+	m_fileSize = std::filesystem::file_size(fileName, ec);
+	m_gz = gzopen(fileName.c_str(), "rb");
+	if (!m_gz) throw InputError("cannot open '" + fileName + "' for reading");
+}
+
+CCheckedGzInputStream::~CCheckedGzInputStream()
+{
+	if (m_gz) gzclose(static_cast<gzFile>(m_gz));
+}
+
+size_t CCheckedGzInputStream::Read(void* buffer, size_t count)
+{
+	auto* gz = static_cast<gzFile>(m_gz);
+	auto* out = static_cast<unsigned char*>(buffer);
+	size_t done = 0;
+	while (done < count)
+	{
+		const unsigned chunk =
+			static_cast<unsigned>(std::min<size_t>(count - done, INT_MAX));
+		const int n = gzread(gz, out + done, chunk);
+		int err = Z_OK;
+		const char* msg = gzerror(gz, &err);
+		if (n < 0 || (err != Z_OK && err != Z_STREAM_END))
+		{
+			// zlib reports a gzip file cut short as Z_BUF_ERROR.
+			const std::string at =
+				" (after " + std::to_string(m_position + done) + " uncompressed bytes)";
+			m_lastError = err == Z_BUF_ERROR
+				? "'" + m_fileName + "' is truncated: the compressed data ends early" + at
+				: "'" + m_fileName + "' is corrupt: " + (msg ? msg : "read error") + at;
+			throw InputError(m_lastError);
+		}
+		if (n == 0) break;  // end of file
+		done += static_cast<size_t>(n);
+	}
+	m_position += done;
+	return done;
+}
+
+size_t CCheckedGzInputStream::Write(const void*, size_t)
+{
+	throw std::logic_error("CCheckedGzInputStream is read-only");
+}
+
+uint64_t CCheckedGzInputStream::Seek(int64_t, mrpt::io::CStream::TSeekOrigin)
+{
+	throw std::logic_error("CCheckedGzInputStream cannot seek");
+}

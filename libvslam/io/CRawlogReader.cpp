@@ -1,0 +1,170 @@
+#include <libvslam/core/ActionOdometry.h>
+#include <libvslam/core/InputError.h>
+#include <libvslam/io/CCheckedGzInputStream.h>
+#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/io/ExceptionText.h>
+#include <mrpt/img/CImage.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+using namespace vslam;
+using mrpt::serialization::CSerializable;
+
+CRawlogReader::CRawlogReader(const std::string& fileName) : m_fileName(fileName)
+{
+	m_stream = std::make_unique<CCheckedGzInputStream>(fileName);
+	m_archive = mrpt::serialization::archiveUniquePtrFrom(*m_stream);
+	mrpt::img::CImage::setImagesPathBase(imagesDirectory(fileName));
+}
+
+CRawlogReader::~CRawlogReader() = default;
+
+std::string CRawlogReader::imagesDirectory(const std::string& rawlogFile)
+{
+	const std::filesystem::path p(rawlogFile);
+	std::string stem = p.filename().string();
+	for (const char* ext : {".gz", ".rawlog"})
+		if (stem.size() > std::strlen(ext) &&
+			stem.compare(stem.size() - std::strlen(ext), std::string::npos, ext) == 0)
+			stem.resize(stem.size() - std::strlen(ext));
+	return (p.parent_path() / (stem + "_Images")).string();
+}
+
+void CRawlogReader::fail(size_t entry, const std::string& what) const
+{
+	throw InputError("rawlog '" + m_fileName + "', entry " + std::to_string(entry) + ": " + what);
+}
+
+CSerializable::Ptr CRawlogReader::readObject(size_t& entry)
+{
+	if (m_pending)
+	{
+		entry = m_pendingEntry;
+		return std::move(m_pending);
+	}
+	if (m_eof) return nullptr;
+	entry = m_objects;
+	const uint64_t before = m_stream->getPosition();
+	try
+	{
+		auto obj = m_archive->ReadObject();
+		m_objects++;
+		return obj;
+	}
+	catch (const mrpt::serialization::CExceptionEOF&)
+	{
+		// CArchive reports any failure inside an object header as EOF: it is
+		// a clean end only if the stream is intact and nothing was consumed.
+		if (!m_stream->lastError().empty()) fail(entry, m_stream->lastError());
+		if (m_stream->getPosition() != before)
+			fail(entry, "the file ends inside an object header (truncated)");
+		m_eof = true;
+		return nullptr;
+	}
+	catch (const InputError& e)
+	{
+		fail(entry, e.what());
+	}
+	catch (const std::exception& e)
+	{
+		const std::string text = exceptionText(e);
+		if (text.find("not registered") != std::string::npos)
+			fail(entry, text + " (a class this program does not know)");
+		fail(entry, "cannot be read, the file is truncated or corrupt: " + text);
+	}
+}
+
+void CRawlogReader::checkOdometry(const mrpt::obs::CActionCollection& a, size_t entry) const
+{
+	const auto p = odometryIncrement(a);
+	if (p && (!std::isfinite(p->x()) || !std::isfinite(p->y()) || !std::isfinite(p->phi())))
+		fail(entry, "odometry increment is not finite (NaN or inf)");
+}
+
+bool CRawlogReader::next(RawlogStep& step)
+{
+	step = RawlogStep();
+	for (;;)
+	{
+		size_t entry = 0;
+		auto obj = readObject(entry);
+		if (!obj) return false;
+		step.entry = entry;
+
+		if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
+		{
+			checkOdometry(*acts, entry);
+			step.action = acts;
+			size_t sfEntry = 0;
+			auto next = readObject(sfEntry);
+			if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(next))
+				step.sf = sf;
+			else
+			{
+				// An action without observations: keep what follows.
+				m_pending = std::move(next);
+				m_pendingEntry = sfEntry;
+				step.sf = mrpt::obs::CSensoryFrame::Create();
+			}
+			if (auto mv = acts->getActionByClass<mrpt::obs::CActionRobotMovement2D>())
+				step.timestamp = mv->timestamp;
+			if (!step.sf->empty()) step.timestamp = (*step.sf->begin())->timestamp;
+			m_format1Steps++;
+			return true;
+		}
+		if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+		{
+			step.sf = sf;
+			if (!sf->empty()) step.timestamp = (*sf->begin())->timestamp;
+			m_format1Steps++;
+			return true;
+		}
+		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obj))
+		{
+			const auto& p = odo->odometry;
+			if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.phi()))
+				fail(entry, "odometry reading is not finite (NaN or inf)");
+			const mrpt::poses::CPose2D increment =
+				m_lastOdometry ? p - *m_lastOdometry : mrpt::poses::CPose2D();
+			m_lastOdometry = p;
+			mrpt::obs::CActionRobotMovement2D mv;
+			mv.computeFromOdometry(increment, mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+			mv.timestamp = odo->timestamp;
+			step.action = mrpt::obs::CActionCollection::Create();
+			step.action->insert(mv);
+			step.sf = mrpt::obs::CSensoryFrame::Create();
+			step.timestamp = odo->timestamp;
+			m_format2Steps++;
+			return true;
+		}
+		if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj))
+		{
+			// Group the observations taken at the same time (one image).
+			step.sf = mrpt::obs::CSensoryFrame::Create();
+			step.sf->insert(o);
+			step.timestamp = o->timestamp;
+			for (;;)
+			{
+				size_t e2 = 0;
+				auto more = readObject(e2);
+				auto o2 = std::dynamic_pointer_cast<mrpt::obs::CObservation>(more);
+				if (o2 && !std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o2) &&
+					o2->timestamp == o->timestamp)
+				{
+					step.sf->insert(o2);
+					continue;
+				}
+				m_pending = std::move(more);
+				m_pendingEntry = e2;
+				break;
+			}
+			m_format2Steps++;
+			return true;
+		}
+		m_skipped++;  // some other serializable object: not for the filter
+	}
+}

@@ -1,0 +1,53 @@
+#pragma once
+/** \file Measurements.h  Small builders for filter inputs in tests. */
+#include <libvslam/filter/CMeasurementExtractor.h>
+
+namespace vslam::testing
+{
+inline LandmarkMeasurement poseMeasurement(
+	int64_t id, const se2::Pose& z, double stdXY = 0.09, double stdPhi = 0.0436)
+{
+	LandmarkMeasurement m;
+	m.key = {LandmarkKind::Pose, id};
+	m.z = VecN(3);
+	m.z << z.x, z.y, z.phi;
+	m.R = MatN::Zero(3, 3);
+	m.R.diagonal() << stdXY * stdXY, stdXY * stdXY, stdPhi * stdPhi;
+	return m;
+}
+
+inline LandmarkMeasurement rangeBearingMeasurement(
+	int64_t id, double range, double bearing, double stdR = 0.05,
+	double stdB = 0.02, const se2::Pose& sensor = {0, 0, 0})
+{
+	LandmarkMeasurement m;
+	m.key = {LandmarkKind::Point, id};
+	m.z = VecN(2);
+	m.z << range, bearing;
+	m.R = MatN::Zero(2, 2);
+	m.R.diagonal() << stdR * stdR, stdB * stdB;
+	m.sensorPose = sensor;
+	return m;
+}
+
+inline LandmarkCreation creation(int64_t id)
+{
+	LandmarkCreation c;
+	c.key = {LandmarkKind::Pose, id};
+	c.relative.key = c.key;
+	c.relative.z = VecN::Zero(3);
+	c.relative.R = MatN::Zero(3, 3);
+	return c;
+}
+
+inline FrameMeasurements frame(
+	double t, std::vector<LandmarkMeasurement> ms,
+	std::vector<LandmarkCreation> cs = {})
+{
+	FrameMeasurements f;
+	f.timestamp = mrpt::Clock::fromDouble(t);
+	f.measurements = std::move(ms);
+	f.creations = std::move(cs);
+	return f;
+}
+}  // namespace vslam::testing
