@@ -1,53 +1,15 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/NumericTable.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 namespace vslam
 {
 namespace
 {
-std::vector<std::vector<double>> readNumericRows(
-	const std::string& file, const std::string& commentChars)
-{
-	std::ifstream in(file);
-	if (!in) throw InputError("cannot open trajectory file '" + file + "'");
-	std::vector<std::vector<double>> rows;
-	std::string line;
-	size_t lineNo = 0;
-	while (std::getline(in, line))
-	{
-		lineNo++;
-		const auto b = line.find_first_not_of(" \t\r");
-		if (b == std::string::npos || commentChars.find(line[b]) != std::string::npos)
-			continue;
-		std::istringstream ls(line);
-		std::vector<double> row;
-		std::string tok;
-		while (ls >> tok)
-		{
-			char* end = nullptr;
-			const double v = std::strtod(tok.c_str(), &end);
-			if (*end != '\0' || !std::isfinite(v))
-				throw InputError(
-					"trajectory file '" + file + "', line " + std::to_string(lineNo) +
-					": '" + tok + "' is not a finite number");
-			row.push_back(v);
-		}
-		if (!rows.empty() && row.size() != rows.front().size())
-			throw InputError(
-				"trajectory file '" + file + "', line " + std::to_string(lineNo) +
-				": " + std::to_string(row.size()) + " columns, expected " +
-				std::to_string(rows.front().size()));
-		rows.push_back(std::move(row));
-	}
-	return rows;
-}
-
 void sortByTime(Trajectory& t)
 {
 	std::stable_sort(t.begin(), t.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
@@ -57,7 +19,7 @@ void sortByTime(Trajectory& t)
 Trajectory readTumTrajectory(const std::string& file)
 {
 	Trajectory out;
-	for (const auto& r : readNumericRows(file, "#%"))
+	for (const auto& r : readNumericTable(file, "#%"))
 	{
 		if (r.size() != 8)
 			throw InputError("'" + file + "' is not a TUM trajectory (8 columns expected)");
@@ -73,7 +35,7 @@ Trajectory readTumTrajectory(const std::string& file)
 Trajectory readRbpfSlamPath(const std::string& file)
 {
 	Trajectory out;
-	for (const auto& r : readNumericRows(file, "#%"))
+	for (const auto& r : readNumericTable(file, "#%"))
 	{
 		if (r.size() != 8)
 			throw InputError(
@@ -88,7 +50,7 @@ Trajectory readTrajectory(const std::string& file)
 {
 	// Both formats have 8 columns: rbpf-slam's first column is an integer
 	// step counter and its last a timestamp; TUM's first is a timestamp.
-	const auto rows = readNumericRows(file, "#%");
+	const auto rows = readNumericTable(file, "#%");
 	if (rows.empty()) return {};
 	const bool rbpf = std::all_of(rows.begin(), rows.end(), [](const auto& r) {
 		return r.size() == 8 && r[0] == std::floor(r[0]) && r[0] >= 0 && r[0] < 1e8;

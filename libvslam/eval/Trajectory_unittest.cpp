@@ -44,6 +44,8 @@ TEST(Trajectory, MalformedFilesNameTheLine)
 {
 	vslam::testing::TempDir dir;
 	std::ofstream(dir.file("bad.tum")) << "# header\n1 2 3 4 5 6 7 8\n1 2 x 4 5 6 7 8\n";
+	std::ofstream(dir.file("short.tum")) << "1 2 3 4 5 6 7 8\n1 2 3\n";
+	EXPECT_THROW(readTumTrajectory(dir.file("short.tum")), InputError);
 	try
 	{
 		readTumTrajectory(dir.file("bad.tum"));

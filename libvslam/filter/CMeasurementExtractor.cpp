@@ -16,6 +16,8 @@ void CMeasurementExtractor::TVisualOptions::loadFromConfigFile(
 	std_dx = readDouble(c, s, "std_dx", std_dx, Range::positive());
 	std_dy = readDouble(c, s, "std_dy", std_dy, Range::positive());
 	std_dphi = readDegreesAsRadians(c, s, "std_dphi_deg", std_dphi, Range::positive());
+	time_jitter_std =
+		readDouble(c, s, "time_jitter_std", time_jitter_std, Range::nonNegative());
 }
 
 void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
@@ -25,6 +27,8 @@ void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
 	c.write(s, "std_dy", std_dy, 25, 12, "Visual measurement noise, dy [m] (paper: 0.09)");
 	c.write(s, "std_dphi_deg", std_dphi * 180 / M_PI, 25, 12,
 		"Visual measurement noise, dtheta [deg] (paper: 0.0019 rad^2 = 2.4975 deg)");
+	c.write(s, "time_jitter_std", time_jitter_std, 25, 12,
+		"Timestamp uncertainty of images vs odometry [s]: noise grows with speed and turn rate");
 }
 
 void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
@@ -35,6 +39,8 @@ void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
 		c, s, "std_bearing_deg", std_bearing, Range::nonNegative());
 	min_range = readDouble(c, s, "min_range", min_range, Range::nonNegative());
 	max_range = readDouble(c, s, "max_range", max_range, Range::nonNegative());
+	time_jitter_std =
+		readDouble(c, s, "time_jitter_std", time_jitter_std, Range::nonNegative());
 }
 
 void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
@@ -46,6 +52,8 @@ void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
 		"Bearing noise [deg]; 0: each observation's sensor_std_yaw");
 	c.write(s, "min_range", min_range, 25, 12, "Ignore ranges below this [m]");
 	c.write(s, "max_range", max_range, 25, 12, "Ignore ranges above this [m] (0: no limit)");
+	c.write(s, "time_jitter_std", time_jitter_std, 25, 12,
+		"Timestamp uncertainty of measurements vs odometry [s]: noise grows with speed and turn rate");
 }
 
 namespace

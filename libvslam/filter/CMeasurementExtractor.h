@@ -55,6 +55,8 @@ class CMeasurementExtractor
 		double std_dx = 0.09;  //!< m
 		double std_dy = 0.09;  //!< m
 		double std_dphi = std::sqrt(0.0019);  //!< rad (INI: degrees)
+		/** Timestamp uncertainty of the images against odometry (s). */
+		double time_jitter_std = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -73,6 +75,8 @@ class CMeasurementExtractor
 		double std_bearing = 0;  //!< rad (INI: degrees)
 		double min_range = 0;  //!< m
 		double max_range = 0;  //!< m, 0: no limit
+		/** Timestamp uncertainty of the measurements against odometry (s). */
+		double time_jitter_std = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,

@@ -9,6 +9,9 @@ using namespace vslam::config;
 void CMixtureProposal::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
+	nominal_proposal = static_cast<Nominal>(readChoice(
+		c, s, "nominal_proposal", static_cast<size_t>(nominal_proposal),
+		{"motion", "optimal"}));
 	dual_ratio = readDouble(c, s, "dual_ratio", dual_ratio, Range::closed(0, 1));
 	dual_ratio_max =
 		readDouble(c, s, "dual_ratio_max", dual_ratio_max, Range::closed(0, 1));
@@ -20,6 +23,9 @@ void CMixtureProposal::TOptions::loadFromConfigFile(
 void CMixtureProposal::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
+	c.write(s, "nominal_proposal",
+		std::string(nominal_proposal == Nominal::Motion ? "motion" : "optimal"), 25, 12,
+		"motion (the paper's nominal particles) | optimal (motion updated with the frame's measurements)");
 	c.write(s, "dual_ratio", dual_ratio, 25, 12,
 		"Base share of dual particles, [0,1] (paper: 20 of 200 = 0.1)");
 	c.write(s, "dual_ratio_max", dual_ratio_max, 25, 12,
@@ -27,12 +33,12 @@ void CMixtureProposal::TOptions::saveToConfigFile(
 	c.write(s, "dynamic_ratio", dynamic_ratio, 25, 12,
 		"Raise the share from dual_ratio to dual_ratio_max as the explained fraction falls");
 	c.write(s, "dual_only_if_sharper", dual_only_if_sharper, 25, 12,
-		"Draw duals only if their position spread is below the predicted cloud's");
+		"Draw duals only if sharper than the predicted cloud or the cloud misses the measurement");
 }
 
-double CMixtureProposal::ratio(double explainedFraction, bool dualSharper) const
+double CMixtureProposal::ratio(double explainedFraction, bool dualUseful) const
 {
-	if (options.dual_only_if_sharper && !dualSharper) return 0.0;
+	if (options.dual_only_if_sharper && !dualUseful) return 0.0;
 	if (!options.dynamic_ratio) return options.dual_ratio;
 	const double f = std::clamp(explainedFraction, 0.0, 1.0);
 	const double hi = std::max(options.dual_ratio, options.dual_ratio_max);

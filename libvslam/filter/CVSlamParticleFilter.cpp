@@ -1,6 +1,7 @@
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
+#include <libvslam/filter/OptimalProposal.h>
 #include <libvslam/models/CLandmarkModel.h>
 #include <libvslam/models/MeasurementUpdate.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -9,6 +10,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <numeric>
 
@@ -47,6 +49,7 @@ void CVSlamParticleFilter::reset()
 	}
 	m_index = CLandmarkIndex();
 	m_odometry.reset();
+	m_lastFrameTime.reset();
 	m_kidnap = CKidnapDetector(m_options.kidnap);
 	m_stats = TFilterStats();
 	m_lastFrame = TFrameReport();
@@ -86,9 +89,12 @@ void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
 	if (sf) processFrame(m_extractor.extract(*sf));
 }
 
-void CVSlamParticleFilter::processFrame(const FrameMeasurements& frame)
+void CVSlamParticleFilter::processFrame(const FrameMeasurements& input)
 {
-	if (frame.empty()) return;
+	if (input.empty()) return;
+	FrameMeasurements frame = input;
+	frame.measurements = withTimeJitter(input);
+	m_lastFrameTime = input.timestamp;
 	const auto& pf = m_options.pf;
 	if (pf.measurement_processing == MeasurementProcessing::Joint ||
 		frame.measurements.size() <= 1)
@@ -113,6 +119,26 @@ void CVSlamParticleFilter::processFrame(const FrameMeasurements& frame)
 // --------------------------------------------------------------------------
 // One update
 // --------------------------------------------------------------------------
+std::vector<LandmarkMeasurement> CVSlamParticleFilter::withTimeJitter(
+	const FrameMeasurements& frame) const
+{
+	std::vector<LandmarkMeasurement> out = frame.measurements;
+	if (!m_lastFrameTime || frame.timestamp <= *m_lastFrameTime || m_odometry.empty())
+		return out;
+	const double dt = std::chrono::duration<double>(frame.timestamp - *m_lastFrameTime).count();
+	const se2::Pose& u = m_odometry.mean();
+	const double v = std::hypot(u.x, u.y) / dt, omega = u.phi / dt;
+	for (auto& m : out)
+	{
+		const double jitter = m.kind() == LandmarkKind::Pose
+			? m_options.visual.time_jitter_std
+			: m_options.rangeBearing.time_jitter_std;
+		if (jitter > 0)
+			m.R += landmarkModel(m.kind()).timeJitterCovariance(m, v, omega, jitter);
+	}
+	return out;
+}
+
 void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 {
 	m_stats.frames++;
@@ -144,7 +170,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	for (const auto& k : known)
 	{
 		evidence.push_back(
-			{k, m_index.entry(k.slot).created, k.explainedFraction >= minFraction});
+			{k, m_index.entry(k.slot).created, k.plausibleFraction >= minFraction});
 		bestFraction = std::max(bestFraction, k.explainedFraction);
 	}
 	m_lastFrame.explainedFraction = bestFraction;
@@ -166,10 +192,10 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	}
 	else
 	{
-		// Measurements no particle explains are outliers: not used.
-		// Landmarks placed while the robot was lost are re-initialized, and
-		// so is a landmark that keeps being unexplained while the robot is
-		// localized (it was misplaced).
+		// Measurements no particle could explain, even allowing an odometry
+		// slip, are outliers: not used. Landmarks placed while the robot was
+		// lost are re-initialized, and so is a landmark that keeps being
+		// unexplained while the robot is localized (it was misplaced).
 		std::vector<KnownMeasurement> used;
 		const uint32_t limit = m_options.landmarks.reinit_after_unexplained;
 		for (const auto& k : known)
@@ -177,7 +203,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 			auto& entry = m_index.entry(k.slot);
 			if (entry.suspect)
 				toReinitialize.emplace_back(k.slot, k.m);
-			else if (k.explainedFraction >= minFraction)
+			else if (k.plausibleFraction >= minFraction)
 			{
 				used.push_back(k);
 				entry.unexplainedStreak = 0;
@@ -278,11 +304,20 @@ void CVSlamParticleFilter::explainedFractions(
 		mean += w[i] * xy;
 		second += w[i] * xy * xy.transpose();
 		motionXY += w[i] * C.topLeftCorner<2, 2>();
+		std::optional<Eigen::Matrix3d> slip;
 		for (auto& k : known)
 		{
 			const auto& model = landmarkModel(k.m->kind());
-			const auto e = evaluateMeasurement(model, predicted, p.bank[k.slot], *k.m, &C);
-			if (m_likelihood.inGate(e)) k.explainedFraction += w[i];
+			const auto& l = p.bank[k.slot];
+			if (m_likelihood.inGate(evaluateMeasurement(model, predicted, l, *k.m, &C)))
+			{
+				k.explainedFraction += w[i];
+				k.plausibleFraction += w[i];
+				continue;
+			}
+			if (!slip) slip = mp.globalSlipCov(p.pose);
+			if (m_likelihood.inGate(evaluateMeasurement(model, predicted, l, *k.m, &*slip)))
+				k.plausibleFraction += w[i];
 		}
 	}
 	spreadXY = second - mean * mean.transpose() + motionXY;
@@ -324,10 +359,13 @@ void CVSlamParticleFilter::normalUpdate(
 	const auto& mo = m_options.mixture;
 	if (mo.dual_ratio > 0 || mo.dual_ratio_max > 0)
 	{
+		// Duals help where the measurement is sharper than the predicted
+		// cloud, or where the cloud misses it (odometry slipped).
 		const CDualProposal q = dualFor(m_particles[bestParticleIndex()].d);
-		const bool sharper = q.valid() &&
-			q.positionSpread().determinant() < spreadXY.determinant();
-		phi = m_mixture.ratio(explainedFraction, sharper);
+		const bool useful = q.valid() &&
+			(q.positionSpread().determinant() < spreadXY.determinant() ||
+			 explainedFraction < 0.5);
+		phi = m_mixture.ratio(explainedFraction, useful);
 	}
 	const size_t nDual = std::min(N, static_cast<size_t>(std::lround(phi * N)));
 	// With exactly nDual duals in a uniformly random subset, each particle
@@ -347,27 +385,40 @@ void CVSlamParticleFilter::normalUpdate(
 	}
 	const double logPhi = std::log(phi), log1mPhi = std::log1p(-phi);
 
+	const bool optimalNominal =
+		m_options.mixture.nominal_proposal == CMixtureProposal::Nominal::Optimal;
 	for (size_t i = 0; i < N; i++)
 	{
 		CVSlamParticle& p = m_particles[i].d;
 		const se2::Pose prev = p.pose;
-		se2::Pose s;
-		double logCorrection = 0;  // log p_motion(s) - log q_i(s)
-		if (nDual > 0)
+		// The particle's proposal: a nominal component (motion model, or
+		// motion updated with the measurements) and a dual one.
+		std::optional<CDualProposal> nominal, dual;
+		if (optimalNominal)
 		{
-			const CDualProposal q = dualFor(p);
-			if (q.valid())
-			{
-				s = isDual[i] ? q.sample(m_rng) : mp.sample(m_rng, prev);
-				const double lm = mp.logDensity(prev, s);
-				logCorrection = lm - logSumExp(log1mPhi + lm, logPhi + q.logDensity(s));
-				m_stats.dualParticlesDrawn += isDual[i];
-			}
-			else
-				s = mp.sample(m_rng, prev);
+			const auto g = optimalProposal(prev, mp, p.bank, used, m_likelihood);
+			if (g.valid) nominal = CDualProposal(g);
+		}
+		if (nDual > 0)
+			if (auto q = dualFor(p); q.valid()) dual = q;
+		se2::Pose s;
+		if (dual && isDual[i])
+		{
+			s = dual->sample(m_rng);
+			m_stats.dualParticlesDrawn++;
 		}
 		else
-			s = mp.sample(m_rng, prev);
+			s = nominal ? nominal->sample(m_rng) : mp.sample(m_rng, prev);
+		// log p_motion(s) - log q_i(s): zero when sampling the motion model.
+		double logCorrection = 0;
+		if (nominal || dual)
+		{
+			const double lm = mp.logDensity(prev, s);
+			const double ln = nominal ? nominal->logDensity(s) : lm;
+			const double lq =
+				dual ? logSumExp(log1mPhi + ln, logPhi + dual->logDensity(s)) : ln;
+			logCorrection = lm - lq;
+		}
 		m_particles[i].log_w += weighAndUpdateLandmarks(p, s, used) + logCorrection;
 		p.pose = s;
 	}
@@ -383,7 +434,11 @@ void CVSlamParticleFilter::createLandmark(
 {
 	m_index.add(key, t);
 	const auto& model = landmarkModel(key.kind);
-	for (auto& p : m_particles) p.d.bank.push_back(model.initialize(p.d.pose, rel));
+	const std::optional<Eigen::Matrix3d> cloud = m_options.landmarks.init_include_pose_uncertainty
+		? std::optional<Eigen::Matrix3d>(poseCovariance())
+		: std::nullopt;
+	for (auto& p : m_particles)
+		p.d.bank.push_back(model.initialize(p.d.pose, rel, cloud ? &*cloud : nullptr));
 }
 
 void CVSlamParticleFilter::reinitializeLandmark(
@@ -397,7 +452,11 @@ void CVSlamParticleFilter::reinitializeLandmark(
 	entry.reinitializations++;
 	m_stats.landmarksReinitialized++;
 	const auto& model = landmarkModel(entry.key.kind);
-	for (auto& p : m_particles) p.d.bank.set(slot, model.initialize(p.d.pose, m));
+	const std::optional<Eigen::Matrix3d> cloud = m_options.landmarks.init_include_pose_uncertainty
+		? std::optional<Eigen::Matrix3d>(poseCovariance())
+		: std::nullopt;
+	for (auto& p : m_particles)
+		p.d.bank.set(slot, model.initialize(p.d.pose, m, cloud ? &*cloud : nullptr));
 }
 
 // --------------------------------------------------------------------------

@@ -31,6 +31,7 @@
 #include <mrpt/bayes/CParticleFilterData.h>
 
 #include <cstdint>
+#include <optional>
 
 namespace mrpt::random
 {
@@ -145,9 +146,12 @@ class CVSlamParticleFilter
 	COdometryAccumulator m_odometry;
 	TFilterStats m_stats;
 	TFrameReport m_lastFrame;
+	std::optional<mrpt::Clock::time_point> m_lastFrameTime;
 	mrpt::random::CRandomGenerator& m_rng;
 
 	void updateWithFrame(const FrameMeasurements& frame);
+	/** The frame's measurements with the timestamp-jitter noise added. */
+	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
 	void switchToRelocalizationHypothesis();
 	void sampleMotionOnly(const MotionPrior& mp);
 	void explainedFractions(

@@ -160,6 +160,7 @@ TEST(CVSlamParticleFilter, NewLandmarksStartFromEachParticlesOwnPose)
 	o.pf.initial_std_xy = 0.5;
 	o.pf.initial_std_phi = 0.3;
 	o.landmarks.init_std_xy = 0.01;
+	o.landmarks.init_include_pose_uncertainty = false;
 	mrpt::random::getRandomGenerator().randomize(6);
 	CVSlamParticleFilter f(o);
 	f.processFrame(frame(0, {}, {creation(42)}));
@@ -173,11 +174,26 @@ TEST(CVSlamParticleFilter, NewLandmarksStartFromEachParticlesOwnPose)
 	EXPECT_EQ(f.stats().landmarksCreated, 1u);
 }
 
+TEST(CVSlamParticleFilter, NewLandmarksCarryThePoseUncertaintyOfTheCloud)
+{
+	auto o = manyParticles(2000);
+	o.pf.initial_std_xy = 0.3;
+	mrpt::random::getRandomGenerator().randomize(6);
+	CVSlamParticleFilter f(o);
+	const Eigen::Matrix3d cloud = f.poseCovariance();
+	f.processFrame(frame(0, {}, {creation(42)}));
+	const auto& l = f.particle(0).bank[0];
+	// Landmark at the robot pose: its covariance adds the cloud's (J = I).
+	EXPECT_NEAR(l.cov(0, 0), cloud(0, 0) + o.landmarks.init_std_xy * o.landmarks.init_std_xy, 1e-9);
+	EXPECT_GT(l.cov(0, 0), 0.08);
+}
+
 TEST(CVSlamParticleFilter, OdometryIsSampledOncePerAccumulatedIncrement)
 {
 	// 200 small increments then one update: the cloud's spread must be the
 	// accumulated model covariance, not more.
 	auto o = manyParticles(20000);
+	o.motion.slip_probability = 0;
 	mrpt::random::getRandomGenerator().randomize(7);
 	CVSlamParticleFilter f(o);
 	for (int i = 0; i < 100; i++) f.addOdometryIncrement({0.01, 0, 0.005});

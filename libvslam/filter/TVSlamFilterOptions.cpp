@@ -75,6 +75,8 @@ void TLandmarkOptions::loadFromConfigFile(
 	reinit_after_unexplained = static_cast<uint32_t>(readInt(
 		c, s, "reinit_after_unexplained", reinit_after_unexplained,
 		Range::closed(0, 1e6)));
+	init_include_pose_uncertainty =
+		readBool(c, s, "init_include_pose_uncertainty", init_include_pose_uncertainty);
 }
 
 void TLandmarkOptions::saveToConfigFile(
@@ -86,6 +88,8 @@ void TLandmarkOptions::saveToConfigFile(
 		"Extra heading std of a new visual landmark's frame [deg]");
 	c.write(s, "reinit_after_unexplained", static_cast<int>(reinit_after_unexplained), 25, 12,
 		"Re-initialize a landmark after this many consecutive unexplained measurements while localized (0: never)");
+	c.write(s, "init_include_pose_uncertainty", init_include_pose_uncertainty, 25, 12,
+		"Add the particle cloud's pose covariance to a new landmark's covariance");
 }
 
 void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)

@@ -67,6 +67,13 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 	/** Re-initialize a landmark after this many consecutive measurements
 	 * that no particle explains while the robot is localized (0: never). */
 	uint32_t reinit_after_unexplained = 3;
+	/** Add the particle cloud's pose covariance at creation (propagated to
+	 * the landmark) to a new landmark's covariance. Resampling soon loses
+	 * the path diversity that FastSLAM relies on to represent where the
+	 * robot was when it placed a landmark; this keeps that uncertainty in
+	 * the landmark, so a later sighting from a well-localized pose corrects
+	 * the landmark instead of pulling the robot. */
+	bool init_include_pose_uncertainty = true;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& cfg,

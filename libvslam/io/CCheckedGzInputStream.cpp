@@ -52,6 +52,12 @@ size_t CCheckedGzInputStream::Read(void* buffer, size_t count)
 	return done;
 }
 
+uint64_t CCheckedGzInputStream::filePosition() const
+{
+	const auto off = gzoffset(static_cast<gzFile>(m_gz));
+	return off < 0 ? 0 : static_cast<uint64_t>(off);
+}
+
 size_t CCheckedGzInputStream::Write(const void*, size_t)
 {
 	throw std::logic_error("CCheckedGzInputStream is read-only");

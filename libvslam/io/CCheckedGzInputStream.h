@@ -30,6 +30,8 @@ class CCheckedGzInputStream : public mrpt::io::CStream
 	uint64_t getTotalBytesCount() const override { return m_fileSize; }
 	/** Uncompressed bytes read so far. */
 	uint64_t getPosition() const override { return m_position; }
+	/** Bytes of the file consumed so far (for progress reports). */
+	uint64_t filePosition() const;
 	std::string getStreamDescription() const override { return m_fileName; }
 	/** The error last thrown by Read(), "" if none (MRPT's CArchive turns
 	 * errors at object boundaries into an end-of-file exception). */

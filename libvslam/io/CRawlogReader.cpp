@@ -23,6 +23,12 @@ CRawlogReader::CRawlogReader(const std::string& fileName) : m_fileName(fileName)
 
 CRawlogReader::~CRawlogReader() = default;
 
+double CRawlogReader::progress() const
+{
+	const uint64_t size = m_stream->getTotalBytesCount();
+	return size == 0 ? 1.0 : std::min(1.0, double(m_stream->filePosition()) / double(size));
+}
+
 std::string CRawlogReader::imagesDirectory(const std::string& rawlogFile)
 {
 	const std::filesystem::path p(rawlogFile);

@@ -52,6 +52,8 @@ class CRawlogReader
 	bool next(RawlogStep& step);
 
 	const std::string& fileName() const { return m_fileName; }
+	/** Share of the file read so far, in [0, 1]. */
+	double progress() const;
 	/** Objects read so far. */
 	size_t objectsRead() const { return m_objects; }
 	size_t actionFrameSteps() const { return m_format1Steps; }

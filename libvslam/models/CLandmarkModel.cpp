@@ -32,6 +32,32 @@ RangeBearingGeometry geometry(
 }
 }  // namespace
 
+LandmarkEstimate CLandmarkModel::initialize(
+	const se2::Pose& s, const LandmarkMeasurement& m, const Eigen::Matrix3d* robotPoseCov) const
+{
+	LandmarkEstimate l = initializeFromMeasurement(s, m);
+	if (robotPoseCov)
+	{
+		const int d = l.dim();
+		const MatN J = inverseJacobianRobot(s, m);
+		l.cov.topLeftCorner(d, d) += J * (*robotPoseCov) * J.transpose();
+	}
+	return l;
+}
+
+MatN CLandmarkModel::timeJitterCovariance(
+	const LandmarkMeasurement& m, double v, double omega, double jitterStd) const
+{
+	// The landmark as seen in the robot frame, then h's sensitivity to a
+	// small motion of the robot frame.
+	const se2::Pose origin{0, 0, 0};
+	const LandmarkEstimate local = initializeFromMeasurement(origin, m);
+	const MatN H = predict(origin, local, m).H_robot;
+	// One timing error moves the robot along one direction: rank one.
+	const VecN dz = H * Eigen::Vector3d(v, 0, omega);
+	return dz * dz.transpose() * (jitterStd * jitterStd);
+}
+
 // --------------------------------------------------------------------------
 // Pose landmarks
 // --------------------------------------------------------------------------
@@ -57,7 +83,13 @@ VecN CPoseLandmarkModel::innovation(
 	return nu;
 }
 
-LandmarkEstimate CPoseLandmarkModel::initialize(
+MatN CPoseLandmarkModel::inverseJacobianRobot(
+	const se2::Pose& s, const LandmarkMeasurement& m) const
+{
+	return se2::jacComposeA(s, {m.z[0], m.z[1], m.z[2]});
+}
+
+LandmarkEstimate CPoseLandmarkModel::initializeFromMeasurement(
 	const se2::Pose& s, const LandmarkMeasurement& m) const
 {
 	const se2::Pose z{m.z[0], m.z[1], m.z[2]};
@@ -115,7 +147,19 @@ VecN CPointLandmarkModel::innovation(
 	return nu;
 }
 
-LandmarkEstimate CPointLandmarkModel::initialize(
+MatN CPointLandmarkModel::inverseJacobianRobot(
+	const se2::Pose& s, const LandmarkMeasurement& m) const
+{
+	// l = sensor.xy + r (cos a, sin a), a = sensor.phi + b, sensor = s (+) t.
+	const se2::Pose sensor = se2::compose(s, m.sensorPose);
+	const double a = sensor.phi + m.z[1];
+	Eigen::Matrix<double, 2, 3> dl_dsensor;
+	dl_dsensor << 1, 0, -m.z[0] * std::sin(a),  //
+		0, 1, m.z[0] * std::cos(a);
+	return dl_dsensor * se2::jacComposeA(s, m.sensorPose);
+}
+
+LandmarkEstimate CPointLandmarkModel::initializeFromMeasurement(
 	const se2::Pose& s, const LandmarkMeasurement& m) const
 {
 	const se2::Pose sensor = se2::compose(s, m.sensorPose);

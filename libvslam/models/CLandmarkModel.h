@@ -36,8 +36,22 @@ class CLandmarkModel
 		const LandmarkMeasurement& m, const VecN& zhat) const = 0;
 
 	/** A new landmark seen from robot pose s (inverse model, covariance from
-	 * the measurement noise). */
-	virtual LandmarkEstimate initialize(
+	 * the measurement noise; with robotPoseCov, also from the uncertainty of
+	 * s, in the global frame). */
+	LandmarkEstimate initialize(
+		const se2::Pose& s, const LandmarkMeasurement& m,
+		const Eigen::Matrix3d* robotPoseCov = nullptr) const;
+
+	/** Covariance that a timestamp error (std jitterStd seconds) adds to
+	 * measurement m while the robot moves at speed v and turn rate omega:
+	 * an error dt displaces the robot by (v dt, 0, omega dt) in its own
+	 * frame, so the added covariance is (H d)(H d)^T jitterStd^2 with
+	 * d = (v, 0, omega) and H = d h / d s at the robot frame. */
+	MatN timeJitterCovariance(
+		const LandmarkMeasurement& m, double v, double omega, double jitterStd) const;
+
+	/** d (landmark state) / d s of the inverse model at s, z. */
+	virtual MatN inverseJacobianRobot(
 		const se2::Pose& s, const LandmarkMeasurement& m) const = 0;
 
 	/** The distribution of robot poses that explain measurement m of
@@ -45,6 +59,11 @@ class CLandmarkModel
 	virtual CDualProposal dualProposal(
 		const LandmarkEstimate& l, const LandmarkMeasurement& m,
 		const HeadingPrior& headingPrior) const = 0;
+
+   protected:
+	/** Inverse model from an exactly known pose s. */
+	virtual LandmarkEstimate initializeFromMeasurement(
+		const se2::Pose& s, const LandmarkMeasurement& m) const = 0;
 };
 
 /** Pose landmarks: h(s, l) = l (-) s, the landmark frame seen from s. */
@@ -55,13 +74,16 @@ class CPoseLandmarkModel : public CLandmarkModel
 	MeasurementPrediction predict(
 		const se2::Pose& s, const LandmarkEstimate& l,
 		const LandmarkMeasurement& m) const override;
-	VecN innovation(
-		const LandmarkMeasurement& m, const VecN& zhat) const override;
-	LandmarkEstimate initialize(
+	VecN innovation(const LandmarkMeasurement& m, const VecN& zhat) const override;
+	MatN inverseJacobianRobot(
 		const se2::Pose& s, const LandmarkMeasurement& m) const override;
 	CDualProposal dualProposal(
 		const LandmarkEstimate& l, const LandmarkMeasurement& m,
 		const HeadingPrior& headingPrior) const override;
+
+   protected:
+	LandmarkEstimate initializeFromMeasurement(
+		const se2::Pose& s, const LandmarkMeasurement& m) const override;
 };
 
 /** Point landmarks: h(s, l) = (range, bearing) of point l from the sensor
@@ -73,13 +95,16 @@ class CPointLandmarkModel : public CLandmarkModel
 	MeasurementPrediction predict(
 		const se2::Pose& s, const LandmarkEstimate& l,
 		const LandmarkMeasurement& m) const override;
-	VecN innovation(
-		const LandmarkMeasurement& m, const VecN& zhat) const override;
-	LandmarkEstimate initialize(
+	VecN innovation(const LandmarkMeasurement& m, const VecN& zhat) const override;
+	MatN inverseJacobianRobot(
 		const se2::Pose& s, const LandmarkMeasurement& m) const override;
 	CDualProposal dualProposal(
 		const LandmarkEstimate& l, const LandmarkMeasurement& m,
 		const HeadingPrior& headingPrior) const override;
+
+   protected:
+	LandmarkEstimate initializeFromMeasurement(
+		const se2::Pose& s, const LandmarkMeasurement& m) const override;
 };
 
 /** The model for a landmark kind (static instances, stateless). */

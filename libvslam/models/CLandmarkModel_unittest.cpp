@@ -202,3 +202,48 @@ TEST(CPointLandmarkModel, DualProposalMeanExplainsTheMeasurement)
 		EXPECT_LT(model.innovation(mExact, p.zhat).norm(), 1e-6);
 	}
 }
+
+TEST(CLandmarkModel, InverseModelJacobiansMatchNumerical)
+{
+	const se2::Pose s{1, -2, 0.9};
+	for (LandmarkKind kind : {LandmarkKind::Pose, LandmarkKind::Point})
+	{
+		const auto& model = landmarkModel(kind);
+		const auto m = kind == LandmarkKind::Pose ? poseMeasurement({1.2, 0.4, -0.7})
+												  : pointMeasurement(2.5, 0.4, {0.1, 0.05, -0.2});
+		const auto inv = [&](const Eigen::VectorXd& x) {
+			return Eigen::VectorXd(model.initialize(vecPose(x), m).meanN());
+		};
+		const Eigen::MatrixXd Jn = numericalJacobian(
+			inv, poseVec(s), kind == LandmarkKind::Pose ? std::set<int>{2} : std::set<int>{});
+		EXPECT_TRUE(Eigen::MatrixXd(model.inverseJacobianRobot(s, m)).isApprox(Jn, 1e-6))
+			<< toString(kind);
+		// With the robot pose uncertainty, the covariance grows by J C J^T.
+		const Eigen::Matrix3d C = Eigen::Vector3d(0.01, 0.02, 0.003).asDiagonal();
+		const auto a = model.initialize(s, m), b = model.initialize(s, m, &C);
+		EXPECT_TRUE(Eigen::MatrixXd(b.covN() - a.covN()).isApprox(Jn * C * Jn.transpose(), 1e-6));
+	}
+}
+
+TEST(CLandmarkModel, TimeJitterCovarianceIsTheEffectOfAShiftedRobot)
+{
+	// A timestamp error dt moves the robot by (v dt, 0, w dt); compare the
+	// analytic covariance with the numerical effect of that motion.
+	const double v = 0.3, w = 0.8, jitter = 0.1;
+	for (LandmarkKind kind : {LandmarkKind::Pose, LandmarkKind::Point})
+	{
+		const auto& model = landmarkModel(kind);
+		const auto m = kind == LandmarkKind::Pose ? poseMeasurement({2.0, 0.5, 0.3})
+												  : pointMeasurement(3.0, 0.2, {0.1, 0, 0});
+		const LandmarkEstimate local = model.initialize({0, 0, 0}, m);
+		const auto h = [&](double dt) {
+			return Eigen::VectorXd(model.predict({v * dt, 0, w * dt}, local, m).zhat);
+		};
+		const double eps = 1e-6;
+		const Eigen::VectorXd dh = (h(eps) - h(-eps)) / (2 * eps);
+		const Eigen::MatrixXd expected = dh * dh.transpose() * jitter * jitter;
+		EXPECT_TRUE(Eigen::MatrixXd(model.timeJitterCovariance(m, v, w, jitter))
+						.isApprox(expected, 1e-5))
+			<< toString(kind);
+	}
+}

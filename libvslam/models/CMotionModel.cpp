@@ -16,6 +16,11 @@ void CMotionModel::TOptions::loadFromConfigFile(
 	min_std_xy = readDouble(c, s, "min_std_xy", min_std_xy, Range::positive());
 	min_std_phi = readDegreesAsRadians(
 		c, s, "min_std_phi_deg", min_std_phi, Range::positive());
+	slip_probability =
+		readDouble(c, s, "slip_probability", slip_probability, Range::halfOpen(0, 1));
+	slip_std_xy = readDouble(c, s, "slip_std_xy", slip_std_xy, Range::positive());
+	slip_std_phi =
+		readDegreesAsRadians(c, s, "slip_std_phi_deg", slip_std_phi, Range::positive());
 }
 
 void CMotionModel::TOptions::saveToConfigFile(
@@ -31,6 +36,11 @@ void CMotionModel::TOptions::saveToConfigFile(
 		"Floor on the xy noise of each sampled increment [m]");
 	c.write(s, "min_std_phi_deg", min_std_phi * 180.0 / M_PI, 25, 12,
 		"Floor on the heading noise of each sampled increment [deg]");
+	c.write(s, "slip_probability", slip_probability, 25, 12,
+		"Probability that one update's odometry failed (slip, bump), [0,1)");
+	c.write(s, "slip_std_xy", slip_std_xy, 25, 12, "Position error of such a failure [m]");
+	c.write(s, "slip_std_phi_deg", slip_std_phi * 180.0 / M_PI, 25, 12,
+		"Heading error of such a failure [deg]");
 }
 
 Eigen::Matrix3d CMotionModel::incrementCovariance(const se2::Pose& u) const
@@ -40,6 +50,13 @@ Eigen::Matrix3d CMotionModel::incrementCovariance(const se2::Pose& u) const
 	const double varPhi = options.sigma_R * options.sigma_R * std::abs(u.phi) +
 		options.sigma_R_per_meter * options.sigma_R_per_meter * d;
 	return Eigen::Vector3d(varXY, varXY, varPhi).asDiagonal();
+}
+
+Eigen::Matrix3d CMotionModel::slipCovariance() const
+{
+	const double a = options.slip_std_xy * options.slip_std_xy;
+	const double b = options.slip_std_phi * options.slip_std_phi;
+	return Eigen::Vector3d(a, a, b).asDiagonal();
 }
 
 Eigen::Matrix3d CMotionModel::covarianceFloor() const

@@ -12,7 +12,12 @@
  * with d = |(dx, dy)|: a random walk in both translation and rotation
  * (holonomic drive: translation noise isotropic). Variances grow linearly
  * with the motion, so splitting one increment into many gives the same
- * total noise. sigma_R_per_meter models heading drift on straight runs
+ * total noise.
+ *
+ * Real odometry also fails now and then (wheel slip, a bump, a collision).
+ * With probability slip_probability per update, the increment's error has
+ * the extra covariance diag(slip_std_xy^2, slip_std_xy^2, slip_std_phi^2):
+ * the motion prior is a two-component Gaussian mixture (MotionPrior.h). sigma_R_per_meter models heading drift on straight runs
  * (unequal wheel diameters), which a real robot always has; set it to 0
  * for the paper's pure two-parameter model.
  */
@@ -20,6 +25,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <Eigen/Core>
+#include <cmath>
 
 namespace vslam
 {
@@ -38,6 +44,10 @@ class CMotionModel
 		 * proposal density is defined when the robot stands still. */
 		double min_std_xy = 1e-4;
 		double min_std_phi = 1e-4;  //!< rad (INI: degrees)
+		/** Probability that one filter update's odometry failed (slip). */
+		double slip_probability = 0.02;
+		double slip_std_xy = 0.2;  //!< m
+		double slip_std_phi = 10 * M_PI / 180;  //!< rad (INI: degrees)
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -56,6 +66,8 @@ class CMotionModel
 	Eigen::Matrix3d incrementCovariance(const se2::Pose& u) const;
 	/** The floor diag(min_std_xy^2, min_std_xy^2, min_std_phi^2). */
 	Eigen::Matrix3d covarianceFloor() const;
+	/** The extra covariance of a slip, diag(slip_std_xy^2, .., slip_std_phi^2). */
+	Eigen::Matrix3d slipCovariance() const;
 };
 
 }  // namespace vslam

@@ -1,0 +1,70 @@
+/** vslam-eval: absolute trajectory error of an estimate against ground
+ * truth (Sturm et al. 2012 conventions, planar).
+ *
+ *   vslam-eval ESTIMATE GROUND_TRUTH [--align] [--max-gap SECONDS]
+ *
+ * Both files may be TUM ("t x y z qx qy qz qw") or rbpf-slam's
+ * log_estimated_path.txt ("step x y z yaw pitch roll t"). Estimated poses
+ * are associated with the ground truth interpolated at their timestamps. */
+#include <libvslam/core/InputError.h>
+#include <libvslam/eval/AbsoluteTrajectoryError.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace
+{
+const char* kUsage = "Usage: vslam-eval ESTIMATE GROUND_TRUTH [--align] [--max-gap SECONDS]\n";
+}
+
+int main(int argc, const char** argv)
+{
+	using namespace vslam;
+	try
+	{
+		AteOptions o;
+		std::vector<std::string> files;
+		for (int i = 1; i < argc; i++)
+		{
+			const std::string a = argv[i];
+			if (a == "--help" || a == "-h")
+			{
+				std::cout << kUsage;
+				return 0;
+			}
+			if (a == "--align")
+				o.align = true;
+			else if (a == "--max-gap" && i + 1 < argc)
+			{
+				char* end = nullptr;
+				o.maxGap = std::strtod(argv[++i], &end);
+				if (*end != '\0' || !(o.maxGap > 0))
+					throw std::invalid_argument("--max-gap needs a positive number");
+			}
+			else if (a.rfind("--", 0) == 0)
+				throw std::invalid_argument("unknown option '" + a + "'");
+			else
+				files.push_back(a);
+		}
+		if (files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
+		const AteStats s = computeAte(readTrajectory(files[0]), readTrajectory(files[1]), o);
+		if (s.associated == 0)
+			throw InputError("no estimated pose has ground truth at its time");
+		std::printf("ate%s: poses %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f\n",
+			o.align ? "_se2_aligned" : "", s.associated, s.rmse, s.mean, s.median, s.max,
+			s.headingRmse * 180 / M_PI);
+		return 0;
+	}
+	catch (const std::invalid_argument& e)
+	{
+		std::cerr << "vslam-eval: error: " << e.what() << "\n" << kUsage;
+		return 1;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "vslam-eval: error: " << e.what() << "\n";
+		return 3;
+	}
+}

@@ -1,0 +1,66 @@
+#pragma once
+/** \file CVSlamApp.h
+ * The vslam application, used like MRPT's rbpf-slam:
+ *
+ *   vslam CONFIG.ini [RAWLOG] [--out DIR] [--set SECTION.KEY=VALUE ...]
+ *
+ * initialize() parses the command line and the INI (with --set overrides,
+ * unknown-key checks and strict values); run() streams the rawlog through
+ * the filter and writes, step by step and flushed:
+ *   log_estimated_path.txt   rbpf-slam's format (step x y z yaw pitch roll t)
+ *   estimated_path.tum       the same in TUM format
+ *   log_odometry_path.txt    dead reckoning (rbpf-slam's odometry format)
+ *   log_filter_steps.txt     ESS, dual share, kidnap test, landmarks, time
+ * and at the end (also after an error or Ctrl-C):
+ *   final_map.txt, most_likely_path.txt/.tum, run_summary.yaml,
+ *   config_used.ini (the effective configuration).
+ * main() wraps both with error reporting and exit codes.
+ */
+#include <libvslam/app/RunSummary.h>
+#include <libvslam/app/TVSlamAppOptions.h>
+#include <libvslam/filter/TVSlamFilterOptions.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <string>
+#include <vector>
+
+namespace vslam
+{
+class CVSlamApp
+{
+   public:
+	enum ExitCode : int
+	{
+		kOk = 0,
+		kUsage = 1,
+		kConfigError = 2,
+		kInputError = 3,
+		kOtherError = 4,
+		kInterrupted = 130
+	};
+
+	/** Parses arguments and configuration; throws ConfigError. Returns
+	 * false if there is nothing to run (--help, --version, ...). */
+	bool initialize(int argc, const char** argv);
+	/** Runs; returns an exit code. Throws InputError on bad data. */
+	int run();
+	/** initialize() + run() with error messages and exit codes. */
+	int main(int argc, const char** argv);
+
+	/** The effective configuration (INI + overrides). */
+	mrpt::config::CConfigFileMemory params;
+	TVSlamAppOptions appOptions;
+	TVSlamFilterOptions filterOptions;
+
+	static std::string usage();
+	/** Every key with its default and documentation, as INI text. */
+	static std::string defaultConfigText();
+
+   private:
+	std::string m_configFile, m_rawlogFile, m_groundTruthFile, m_outputDir;
+	bool m_quiet = false;
+
+	void loadConfig(const std::string& file, const std::vector<std::string>& overrides);
+	std::string resolveInput(const std::string& path) const;
+};
+}  // namespace vslam

@@ -1,0 +1,34 @@
+#pragma once
+/** \file RunSummary.h
+ * The run summary (run_summary.yaml): what was processed, what was
+ * accepted and rejected by which rule, kidnaps, timing, memory, and errors
+ * against ground truth when given. Valid YAML, so scripts can read it. */
+#include <libvslam/eval/AbsoluteTrajectoryError.h>
+#include <libvslam/filter/CVSlamParticleFilter.h>
+
+#include <optional>
+#include <string>
+
+namespace vslam
+{
+struct RunSummary
+{
+	std::string status = "completed";  //!< completed | interrupted | failed
+	std::string error;  //!< when failed
+	std::string configFile, rawlogFile, outputDir;
+	uint64_t seed = 0;
+	uint64_t steps = 0, actionFrameSteps = 0, observationSteps = 0, skippedObjects = 0;
+	double totalSeconds = 0, stepMeanMs = 0, stepMaxMs = 0;
+	double peakMemoryMiB = 0;
+	double realTimeSpan = 0;  //!< seconds of data processed (timestamps)
+	std::optional<AteStats> ate, ateAligned, odometryAte;
+
+	/** Writes the summary with the filter's counters. */
+	void write(const std::string& file, const CVSlamParticleFilter& filter) const;
+	/** A few human-readable lines for the console. */
+	std::string brief(const CVSlamParticleFilter& filter) const;
+};
+
+/** Peak resident memory of this process so far (MiB). */
+double peakMemoryMiB();
+}  // namespace vslam

@@ -1,0 +1,36 @@
+#include <libvslam/app/TVSlamAppOptions.h>
+#include <libvslam/config/StrictRead.h>
+
+using namespace vslam;
+using namespace vslam::config;
+
+void TVSlamAppOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	rawlog_file = readString(c, s, "rawlog_file", rawlog_file);
+	output_dir = readString(c, s, "output_dir", output_dir);
+	RANDOM_SEED = readInt(c, s, "RANDOM_SEED", RANDOM_SEED, Range::closed(-1, 4294967295.0));
+	ground_truth_file = readString(c, s, "ground_truth_file", ground_truth_file);
+	initial_pose_from_ground_truth =
+		readBool(c, s, "initial_pose_from_ground_truth", initial_pose_from_ground_truth);
+	max_steps = static_cast<uint64_t>(readInt(c, s, "max_steps", 0, Range::closed(0, 1e15)));
+	show_progress = readBool(c, s, "show_progress", show_progress);
+}
+
+void TVSlamAppOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "rawlog_file", rawlog_file, 25, 12,
+		"Input rawlog (either MRPT format, .gz or plain); relative to this INI");
+	c.write(s, "output_dir", output_dir, 25, 12,
+		"Output folder (relative to the working folder); created if needed");
+	c.write(s, "RANDOM_SEED", static_cast<long long>(RANDOM_SEED), 25, 12,
+		"Seed of the random generator (-1: from the clock); same seed, same outputs");
+	c.write(s, "ground_truth_file", ground_truth_file, 25, 12,
+		"Optional ground truth (TUM or rbpf-slam path format) for error figures");
+	c.write(s, "initial_pose_from_ground_truth", initial_pose_from_ground_truth, 25, 12,
+		"Start at the ground-truth pose of the first step instead of the initial_* keys");
+	c.write(s, "max_steps", static_cast<long long>(max_steps), 25, 12,
+		"Process at most this many rawlog steps (0: all)");
+	c.write(s, "show_progress", show_progress, 25, 12, "Print a progress line");
+}

@@ -1,0 +1,40 @@
+#pragma once
+/** \file TVSlamAppOptions.h
+ * The [vslam] section: what to read, where to write, the random seed.
+ * Input files given in the INI are relative to the INI file's folder;
+ * output_dir and command-line paths are relative to the working folder.
+ */
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <cstdint>
+#include <string>
+
+namespace vslam
+{
+struct TVSlamAppOptions : public mrpt::config::CLoadableOptions
+{
+	static constexpr const char* kSection = "vslam";
+
+	std::string rawlog_file;
+	std::string output_dir = "vslam_out";
+	/** -1: seed from the clock (the seed used is written to the summary). */
+	int64_t RANDOM_SEED = -1;
+	/** Optional ground truth (TUM or rbpf-slam path format) for the
+	 * summary's error figures. */
+	std::string ground_truth_file;
+	/** Start the filter at the ground-truth pose of the first step (both
+	 * trajectories then start at the robot's first pose), instead of
+	 * [vslam_particle_filter] initial_x/y/phi_deg. */
+	bool initial_pose_from_ground_truth = false;
+	/** Process at most this many rawlog steps (0: all). */
+	uint64_t max_steps = 0;
+	bool show_progress = true;
+
+	void loadFromConfigFile(
+		const mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) override;
+	void saveToConfigFile(
+		mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) const override;
+};
+}  // namespace vslam

@@ -1,0 +1,209 @@
+#include <libvslam/core/InputError.h>
+#include <libvslam/io/MrclamImporter.h>
+#include <libvslam/io/NumericTable.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+namespace vslam
+{
+namespace
+{
+/** Dead reckoning from (time, v, omega) rows, each held until the next. */
+class OdometryIntegrator
+{
+   public:
+	explicit OdometryIntegrator(std::vector<std::vector<double>> rows) : m_rows(std::move(rows))
+	{
+		m_t = m_rows.front()[0];
+	}
+	double startTime() const { return m_rows.front()[0]; }
+	double endTime() const { return m_rows.back()[0]; }
+
+	/** The odometry pose at time t >= the last query. */
+	const se2::Pose& advanceTo(double t)
+	{
+		while (m_t < t && m_k + 1 < m_rows.size())
+		{
+			const double segEnd = std::min(t, m_rows[m_k + 1][0]);
+			arc(m_rows[m_k][1], m_rows[m_k][2], segEnd - m_t);
+			m_t = segEnd;
+			if (m_t >= m_rows[m_k + 1][0]) m_k++;
+		}
+		return m_pose;
+	}
+
+   private:
+	std::vector<std::vector<double>> m_rows;
+	size_t m_k = 0;
+	double m_t = 0;
+	se2::Pose m_pose{0, 0, 0};
+
+	void arc(double v, double w, double dt)
+	{
+		if (dt <= 0) return;
+		const double dth = w * dt;
+		const se2::Pose inc = std::abs(w) < 1e-12
+			? se2::Pose{v * dt, 0, 0}
+			: se2::Pose{v / w * std::sin(dth), v / w * (1 - std::cos(dth)), dth};
+		m_pose = se2::compose(m_pose, inc);
+	}
+};
+
+std::string robotFile(const std::string& dir, int robot, const char* kind)
+{
+	return (std::filesystem::path(dir) / ("Robot" + std::to_string(robot) + "_" + kind + ".dat"))
+		.string();
+}
+
+void checkSorted(const std::vector<std::vector<double>>& rows, const std::string& file)
+{
+	for (size_t i = 1; i < rows.size(); i++)
+		if (rows[i][0] < rows[i - 1][0])
+			throw InputError("'" + file + "': times go backwards at data row " + std::to_string(i + 1));
+}
+}  // namespace
+
+MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
+{
+	if (o.robot < 1 || o.robot > 5)
+		throw InputError("MRCLAM robot must be 1..5, got " + std::to_string(o.robot));
+	if (!(o.max_step_gap > 0)) throw InputError("max_step_gap must be > 0");
+	const std::string barcodesFile = (std::filesystem::path(dir) / "Barcodes.dat").string();
+	const std::string landmarksFile =
+		(std::filesystem::path(dir) / "Landmark_Groundtruth.dat").string();
+	const std::string odoFile = robotFile(dir, o.robot, "Odometry");
+	const std::string measFile = robotFile(dir, o.robot, "Measurement");
+	const std::string gtFile = robotFile(dir, o.robot, "Groundtruth");
+
+	std::map<int, int> subjectOfBarcode;
+	for (const auto& r : readNumericTable(barcodesFile, "#", 2))
+		subjectOfBarcode[static_cast<int>(r[1])] = static_cast<int>(r[0]);
+	auto odoRows = readNumericTable(odoFile, "#", 3);
+	for (auto& r : odoRows) r[0] += o.odometry_delay;
+	const auto measRows = readNumericTable(measFile, "#", 4);
+	Trajectory gtWorld;
+	for (const auto& r : readNumericTable(gtFile, "#", 4)) gtWorld.push_back({r[0], {r[1], r[2], r[3]}});
+	if (odoRows.size() < 2) throw InputError("'" + odoFile + "' has fewer than 2 rows");
+	if (gtWorld.empty()) throw InputError("'" + gtFile + "' is empty");
+	checkSorted(odoRows, odoFile);
+	checkSorted(measRows, measFile);
+
+	MrclamImport out;
+	out.odometryRows = odoRows.size();
+	out.measurementRows = measRows.size();
+	OdometryIntegrator odometry(odoRows);
+	const double tOdo = odometry.startTime(), tEnd = odometry.endTime();
+	// Step times: every image inside the odometry span, plus gap fillers.
+	std::map<double, std::vector<mrpt::obs::CObservationBearingRange::TMeasurement>> images;
+	for (const auto& r : measRows)
+	{
+		const auto it = subjectOfBarcode.find(static_cast<int>(r[1]));
+		if (it == subjectOfBarcode.end())
+		{
+			out.droppedFalseBarcodes++;
+			continue;
+		}
+		if (it->second <= 5)
+		{
+			out.droppedRobotSightings++;
+			continue;
+		}
+		if (r[0] < tOdo || r[0] > tEnd)
+		{
+			out.droppedOutsideOdometry++;
+			continue;
+		}
+		mrpt::obs::CObservationBearingRange::TMeasurement m;
+		m.range = static_cast<float>(r[2]);
+		m.yaw = static_cast<float>(r[3]);
+		m.pitch = 0;
+		m.landmarkID = it->second;
+		images[r[0]].push_back(m);
+		out.measurementsUsed++;
+	}
+	if (images.empty()) throw InputError("'" + measFile + "' has no landmark detection");
+	// Start: the first image with a landmark detection. Some robots turn
+	// before that; MRPT's kf-slam ignores odometry until its map holds a
+	// landmark, so starting earlier would hand it a wrong start heading.
+	const double t0 = images.begin()->first;
+	const auto start = interpolate(gtWorld, t0, 1.0);
+	if (!start)
+		throw InputError("'" + gtFile + "' has no ground truth at the first detection time " +
+			std::to_string(t0));
+	out.startPoseWorld = *start;
+	for (const auto& p : gtWorld)
+		out.groundTruth.push_back({p.t, se2::between(out.startPoseWorld, p.pose)});
+	for (const auto& r : readNumericTable(landmarksFile, "#", 5))
+	{
+		const se2::Pose l = se2::between(out.startPoseWorld, {r[1], r[2], 0});
+		out.landmarks.push_back({static_cast<int>(r[0]), l.x, l.y});
+	}
+
+	std::vector<double> times{t0};
+	double last = t0;
+	const auto fillTo = [&](double t) {
+		const int n = static_cast<int>(std::ceil((t - last) / o.max_step_gap - 1e-9));
+		for (int i = 1; i < n; i++) times.push_back(last + (t - last) * i / n);
+		times.push_back(t);
+		last = t;
+	};
+	for (const auto& [t, ms] : images)
+		if (t > t0) fillTo(t);
+	if (last < tEnd) fillTo(tEnd);
+
+	const CMotionModel motion(o.motion);
+	se2::Pose prev = odometry.advanceTo(t0);
+	for (double t : times)
+	{
+		const se2::Pose now = odometry.advanceTo(t);
+		const auto stamp = mrpt::Clock::fromDouble(t);
+		const se2::Pose inc = se2::between(prev, now);
+		// The increment's covariance from our motion model (with its floor).
+		// MRPT stores odometry actions as the increment plus motion-model
+		// options and recomputes the covariance when reading; its Gaussian
+		// model with a1..a4 = 0 gives diag(minStdXY^2, minStdXY^2,
+		// minStdPHI^2), exactly ours (isotropic in xy, so frame-free).
+		const Eigen::Matrix3d C = motion.incrementCovariance(inc) + motion.covarianceFloor();
+		mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mm;
+		mm.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+		mm.gaussianModel.a1 = mm.gaussianModel.a2 = mm.gaussianModel.a3 = mm.gaussianModel.a4 = 0;
+		mm.gaussianModel.minStdXY = std::sqrt(C(0, 0));
+		mm.gaussianModel.minStdPHI = std::sqrt(C(2, 2));
+		mrpt::obs::CActionRobotMovement2D mv;
+		mv.computeFromOdometry(mrpt::poses::CPose2D(inc), mm);
+		mv.timestamp = stamp;
+		prev = now;
+		auto acts = mrpt::obs::CActionCollection::Create();
+		acts->insert(mv);
+		// Every frame holds an observation, empty between images: MRPT's
+		// kf-slam requires one in every sensory frame.
+		auto obs = mrpt::obs::CObservationBearingRange::Create();
+		obs->timestamp = stamp;
+		obs->sensorLabel = "CAMERA_LANDMARKS";
+		if (const auto it = images.find(t); it != images.end()) obs->sensedData = it->second;
+		obs->sensor_std_range = static_cast<float>(o.std_range);
+		obs->sensor_std_yaw = static_cast<float>(o.std_bearing);
+		obs->fieldOfView_yaw = static_cast<float>(70 * M_PI / 180);
+		obs->validCovariances = false;
+		auto sf = mrpt::obs::CSensoryFrame::Create();
+		sf->insert(obs);
+		out.steps.emplace_back(acts, sf);
+	}
+	return out;
+}
+
+void writeMrclamLandmarks(const std::string& file, const std::vector<MrclamLandmark>& landmarks)
+{
+	FILE* f = std::fopen(file.c_str(), "wt");
+	if (!f) throw InputError("cannot create '" + file + "'");
+	std::fprintf(f, "%% subject x y (start frame of the robot)\n");
+	for (const auto& l : landmarks) std::fprintf(f, "%d %.6f %.6f\n", l.subject, l.x, l.y);
+	std::fclose(f);
+}
+}  // namespace vslam
