@@ -102,7 +102,7 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 			m_stats.visualAccepted++;
 			LandmarkMeasurement m;
 			m.key = {LandmarkKind::Pose, v->landmarkID};
-			m.z = VecN(3);
+			m.z.resize(3);
 			m.z << v->relPose.x(), v->relPose.y(), v->relPose.phi();
 			m.R = MatN::Zero(3, 3);
 			m.R.diagonal() << visual.std_dx * visual.std_dx,
@@ -120,7 +120,7 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 			LandmarkCreation lc;
 			lc.key = {LandmarkKind::Pose, c->landmarkID};
 			lc.relative.key = lc.key;
-			lc.relative.z = VecN(3);
+			lc.relative.z.resize(3);
 			lc.relative.z << c->landmarkPoseInRobot.x(), c->landmarkPoseInRobot.y(),
 				c->landmarkPoseInRobot.phi();
 			lc.relative.R = c->landmarkPoseInRobotCov.asEigen();
@@ -159,7 +159,7 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 				m_stats.rangeBearingAccepted++;
 				LandmarkMeasurement m;
 				m.key = {LandmarkKind::Point, d.landmarkID};
-				m.z = VecN(2);
+				m.z.resize(2);
 				m.z << d.range, d.yaw;
 				m.R = MatN::Zero(2, 2);
 				m.R.diagonal() << stdR * stdR, stdB * stdB;

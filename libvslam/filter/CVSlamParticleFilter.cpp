@@ -163,7 +163,9 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	// kidnap test makes of it.
 	const MotionPrior mp(m_odometry, m_motion);
 	Eigen::Matrix2d spreadXY = Eigen::Matrix2d::Zero();
-	if (!known.empty()) explainedFractions(known, mp, spreadXY);
+	const bool optimal = m_options.mixture.nominal_proposal == CMixtureProposal::Nominal::Optimal;
+	std::vector<PoseGaussianProposal>& proposals = m_proposalBuffer;
+	if (!known.empty()) explainedFractions(known, mp, spreadXY, optimal ? &proposals : nullptr);
 	const double minFraction = m_options.kidnap.explained_min_fraction;
 	std::vector<CKidnapDetector::Evidence> evidence;
 	double bestFraction = 0;
@@ -219,7 +221,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		if (used.empty())
 			sampleMotionOnly(mp);
 		else
-			normalUpdate(used, mp, spreadXY, bestFraction);
+			normalUpdate(used, mp, spreadXY, bestFraction, optimal ? &proposals : nullptr);
 	}
 	m_odometry.reset();
 
@@ -289,35 +291,44 @@ void CVSlamParticleFilter::sampleMotionOnly(const MotionPrior& mp)
 }
 
 void CVSlamParticleFilter::explainedFractions(
-	std::vector<KnownMeasurement>& known, const MotionPrior& mp,
-	Eigen::Matrix2d& spreadXY) const
+	std::vector<KnownMeasurement>& known, const MotionPrior& mp, Eigen::Matrix2d& spreadXY,
+	std::vector<PoseGaussianProposal>* proposals) const
 {
 	const std::vector<double> w = normalizedLinearWeights();
 	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
 	Eigen::Matrix2d second = Eigen::Matrix2d::Zero(), motionXY = Eigen::Matrix2d::Zero();
-	for (size_t i = 0; i < m_particles.size(); i++)
+	if (proposals) proposals->resize(m_particles.size());
+	std::vector<char> inGate(known.size());
+	size_t i = 0;
+	for (auto it = m_particles.begin(); it != m_particles.end(); ++it, ++i)
 	{
-		const CVSlamParticle& p = m_particles[i].d;
+		const CVSlamParticle& p = it->d;
 		const se2::Pose predicted = se2::compose(p.pose, mp.increment());
 		const Eigen::Matrix3d C = mp.globalCov(p.pose);
 		const Eigen::Vector2d xy(predicted.x, predicted.y);
 		mean += w[i] * xy;
 		second += w[i] * xy * xy.transpose();
 		motionXY += w[i] * C.topLeftCorner<2, 2>();
+		if (proposals)
+			(*proposals)[i] = optimalProposal(predicted, C, p.bank, known, m_likelihood, &inGate);
 		std::optional<Eigen::Matrix3d> slip;
-		for (auto& k : known)
+		for (size_t k = 0; k < known.size(); k++)
 		{
-			const auto& model = landmarkModel(k.m->kind());
-			const auto& l = p.bank[k.slot];
-			if (m_likelihood.inGate(evaluateMeasurement(model, predicted, l, *k.m, &C)))
+			auto& km = known[k];
+			const auto& model = landmarkModel(km.m->kind());
+			const auto& l = p.bank[km.slot];
+			const bool explained = proposals
+				? inGate[k] != 0
+				: m_likelihood.inGate(evaluateMeasurement(model, predicted, l, *km.m, &C));
+			if (explained)
 			{
-				k.explainedFraction += w[i];
-				k.plausibleFraction += w[i];
+				km.explainedFraction += w[i];
+				km.plausibleFraction += w[i];
 				continue;
 			}
 			if (!slip) slip = mp.globalSlipCov(p.pose);
-			if (m_likelihood.inGate(evaluateMeasurement(model, predicted, l, *k.m, &*slip)))
-				k.plausibleFraction += w[i];
+			if (m_likelihood.inGate(evaluateMeasurement(model, predicted, l, *km.m, &*slip)))
+				km.plausibleFraction += w[i];
 		}
 	}
 	spreadXY = second - mean * mean.transpose() + motionXY;
@@ -341,7 +352,8 @@ double CVSlamParticleFilter::weighAndUpdateLandmarks(
 
 void CVSlamParticleFilter::normalUpdate(
 	const std::vector<KnownMeasurement>& used, const MotionPrior& mp,
-	const Eigen::Matrix2d& spreadXY, double explainedFraction)
+	const Eigen::Matrix2d& spreadXY, double explainedFraction,
+	const std::vector<PoseGaussianProposal>* proposals)
 {
 	const size_t N = m_particles.size();
 	const size_t kStar = mostInformativeMeasurement(used);
@@ -385,20 +397,16 @@ void CVSlamParticleFilter::normalUpdate(
 	}
 	const double logPhi = std::log(phi), log1mPhi = std::log1p(-phi);
 
-	const bool optimalNominal =
-		m_options.mixture.nominal_proposal == CMixtureProposal::Nominal::Optimal;
-	for (size_t i = 0; i < N; i++)
+	size_t i = 0;
+	for (auto it = m_particles.begin(); it != m_particles.end(); ++it, ++i)
 	{
-		CVSlamParticle& p = m_particles[i].d;
+		CVSlamParticle& p = it->d;
 		const se2::Pose prev = p.pose;
 		// The particle's proposal: a nominal component (motion model, or
-		// motion updated with the measurements) and a dual one.
+		// motion updated with the measurements, computed by
+		// explainedFractions()) and a dual one.
 		std::optional<CDualProposal> nominal, dual;
-		if (optimalNominal)
-		{
-			const auto g = optimalProposal(prev, mp, p.bank, used, m_likelihood);
-			if (g.valid) nominal = CDualProposal(g);
-		}
+		if (proposals && (*proposals)[i].valid) nominal = CDualProposal((*proposals)[i]);
 		if (nDual > 0)
 			if (auto q = dualFor(p); q.valid()) dual = q;
 		se2::Pose s;
@@ -419,7 +427,7 @@ void CVSlamParticleFilter::normalUpdate(
 				dual ? logSumExp(log1mPhi + ln, logPhi + dual->logDensity(s)) : ln;
 			logCorrection = lm - lq;
 		}
-		m_particles[i].log_w += weighAndUpdateLandmarks(p, s, used) + logCorrection;
+		it->log_w += weighAndUpdateLandmarks(p, s, used) + logCorrection;
 		p.pose = s;
 	}
 	for (const auto& k : used) m_index.entry(k.slot).measurements++;

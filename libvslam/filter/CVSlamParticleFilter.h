@@ -147,6 +147,7 @@ class CVSlamParticleFilter
 	TFilterStats m_stats;
 	TFrameReport m_lastFrame;
 	std::optional<mrpt::Clock::time_point> m_lastFrameTime;
+	std::vector<PoseGaussianProposal> m_proposalBuffer;  //!< reused per frame
 	mrpt::random::CRandomGenerator& m_rng;
 
 	void updateWithFrame(const FrameMeasurements& frame);
@@ -154,12 +155,18 @@ class CVSlamParticleFilter
 	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
 	void switchToRelocalizationHypothesis();
 	void sampleMotionOnly(const MotionPrior& mp);
+	/** Explained / plausible weight fractions of every known measurement,
+	 * and the spread of the predicted cloud. With the optimal nominal
+	 * proposal, each particle's proposal is computed here once (its gate
+	 * decisions are the explained test) and returned for the update. */
 	void explainedFractions(
 		std::vector<KnownMeasurement>& known, const MotionPrior& mp,
-		Eigen::Matrix2d& predictedSpreadXY) const;
+		Eigen::Matrix2d& predictedSpreadXY,
+		std::vector<PoseGaussianProposal>* optimalProposals) const;
 	void normalUpdate(
 		const std::vector<KnownMeasurement>& used, const MotionPrior& mp,
-		const Eigen::Matrix2d& predictedSpreadXY, double explainedFraction);
+		const Eigen::Matrix2d& predictedSpreadXY, double explainedFraction,
+		const std::vector<PoseGaussianProposal>* optimalProposals);
 	double weighAndUpdateLandmarks(
 		CVSlamParticle& p, const se2::Pose& s,
 		const std::vector<KnownMeasurement>& used);

@@ -115,7 +115,10 @@ TEST_P(MixturePosterior, MatchesTheAnalyticPosteriorForAnyDualRatio)
 		EXPECT_NEAR(cov(i, i), C(i, i), 0.1 * C(i, i)) << i;
 	}
 	// Duals sharpen the proposal: the weights get more even.
-	if (phi >= 0.5) EXPECT_GT(f.ESS(), 0.4);
+	if (phi >= 0.5)
+	{
+		EXPECT_GT(f.ESS(), 0.4);
+	}
 }
 
 INSTANTIATE_TEST_SUITE_P(DualRatios, MixturePosterior, ::testing::Values(0.0, 0.5, 1.0));
@@ -135,8 +138,12 @@ TEST(CVSlamParticleFilter, OnlyTheObservedLandmarkIsUpdated)
 	{
 		const LandmarkBank& bank = f.particle(i).bank;
 		for (int k = 0; k < 300; k++)
+		{
 			if (k != 7)
+			{
 				EXPECT_EQ(bank[k].mean, before[k].mean);
+			}
+		}
 		EXPECT_LT(bank[7].cov(0, 0), before[7].cov(0, 0));
 		// Copy-on-write: only the path to slot 7 is new.
 		EXPECT_EQ(bank.nodesNotIn(before), before.levels() + 1u);

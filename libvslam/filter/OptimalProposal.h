@@ -6,7 +6,6 @@
  * inside its validation gate (outliers must not pull the proposal). */
 #include <libvslam/filter/CVSlamParticle.h>
 #include <libvslam/filter/KnownMeasurement.h>
-#include <libvslam/filter/MotionPrior.h>
 #include <libvslam/models/CRobustLikelihood.h>
 #include <libvslam/models/DualProposal.h>
 
@@ -14,7 +13,12 @@
 
 namespace vslam
 {
+/** \param predicted the odometry prediction of the pose
+ *  \param predictedCov its covariance (global frame)
+ *  \param inGate if given, set to whether each measurement passed its
+ *        gate (at the pose updated with the measurements before it). */
 PoseGaussianProposal optimalProposal(
-	const se2::Pose& previous, const MotionPrior& motion, const LandmarkBank& bank,
-	const std::vector<KnownMeasurement>& measurements, const CRobustLikelihood& likelihood);
+	const se2::Pose& predicted, const Eigen::Matrix3d& predictedCov, const LandmarkBank& bank,
+	const std::vector<KnownMeasurement>& measurements, const CRobustLikelihood& likelihood,
+	std::vector<char>* inGate = nullptr);
 }  // namespace vslam

@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <libvslam/filter/MotionPrior.h>
 #include <libvslam/filter/OptimalProposal.h>
 #include <tests/support/Measurements.h>
 
@@ -27,7 +28,7 @@ TEST(OptimalProposal, IsTheKalmanPosteriorOfThePredictedPose)
 	bank.push_back(l);
 	const se2::Pose truth{1.1, -0.05, 0.02};
 	const auto m = vslam::testing::poseMeasurement(1, se2::between(truth, {3, 0.5, 0.2}), 0.05, 0.02);
-	const auto q = optimalProposal({0, 0, 0}, mp, bank, {KnownMeasurement{&m, 0, 0, 0}}, CRobustLikelihood());
+	const auto q = optimalProposal(se2::compose({0, 0, 0}, mp.increment()), mp.globalCov({0, 0, 0}), bank, {KnownMeasurement{&m, 0, 0, 0}}, CRobustLikelihood());
 	ASSERT_TRUE(q.valid);
 	// The measurement implies s = l (+) z^-1 with covariance J R J^T.
 	const se2::Pose zInv = se2::inverse({m.z[0], m.z[1], m.z[2]});
@@ -58,7 +59,7 @@ TEST(OptimalProposal, IgnoresMeasurementsOutsideTheGate)
 	l.cov = Eigen::Matrix3d::Identity() * 1e-4;
 	bank.push_back(l);
 	const auto outlier = vslam::testing::poseMeasurement(1, {-3, 4, 1});
-	const auto q = optimalProposal({0, 0, 0}, mp, bank, {KnownMeasurement{&outlier, 0, 0, 0}}, CRobustLikelihood());
+	const auto q = optimalProposal(se2::compose({0, 0, 0}, mp.increment()), mp.globalCov({0, 0, 0}), bank, {KnownMeasurement{&outlier, 0, 0, 0}}, CRobustLikelihood());
 	EXPECT_NEAR(q.mean.x, 0.2, 1e-12);  // the motion prediction, unchanged
 	EXPECT_TRUE(q.cov.isApprox(mp.globalCov({0, 0, 0})));
 }

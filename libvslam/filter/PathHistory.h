@@ -6,6 +6,7 @@
  * lineages that survive. Destruction is iterative (no deep recursion on
  * hour-long paths).
  */
+#include <libvslam/filter/FreeList.h>
 #include <libvslam/models/SE2.h>
 #include <mrpt/core/Clock.h>
 
@@ -23,6 +24,7 @@ class PathHistory
 		se2::Pose pose;
 		mrpt::Clock::time_point t;
 		Node* parent = nullptr;
+		VSLAM_FREELIST_ALLOCATED(Node)
 	};
 
    public:

@@ -12,6 +12,8 @@
  * Reference counts are plain integers: arrays that share nodes must be used
  * from one thread (the filter is single-threaded by design).
  */
+#include <libvslam/filter/FreeList.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -34,11 +36,13 @@ class PersistentArray
 	struct Inner : Node
 	{
 		Node* child[kFanout] = {};
+		VSLAM_FREELIST_ALLOCATED(Inner)
 	};
 	struct Leaf : Node
 	{
 		explicit Leaf(const T& v) : value(v) {}
 		T value;
+		VSLAM_FREELIST_ALLOCATED(Leaf)
 	};
 
    public:

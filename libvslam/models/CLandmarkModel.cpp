@@ -38,9 +38,11 @@ LandmarkEstimate CLandmarkModel::initialize(
 	LandmarkEstimate l = initializeFromMeasurement(s, m);
 	if (robotPoseCov)
 	{
-		const int d = l.dim();
-		const MatN J = inverseJacobianRobot(s, m);
-		l.cov.topLeftCorner(d, d) += J * (*robotPoseCov) * J.transpose();
+		// Padded to 3x3 (zero rows for point landmarks), so the unused block
+		// of the fixed-size covariance stays zero.
+		Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+		J.topRows(l.dim()) = inverseJacobianRobot(s, m);
+		l.cov += J * (*robotPoseCov) * J.transpose();
 	}
 	return l;
 }
@@ -65,13 +67,21 @@ MeasurementPrediction CPoseLandmarkModel::predict(
 	const se2::Pose& s, const LandmarkEstimate& l,
 	const LandmarkMeasurement& /*m*/) const
 {
-	const se2::Pose lp = asPose(l);
-	const se2::Pose z = se2::between(s, lp);
+	// between(s, l) and its Jacobians, sharing one sin/cos.
+	const double c = std::cos(s.phi), sn = std::sin(s.phi);
+	const double dx = l.mean[0] - s.x, dy = l.mean[1] - s.y;
+	const double zx = c * dx + sn * dy, zy = -sn * dx + c * dy;
 	MeasurementPrediction p;
-	p.zhat = VecN(3);
-	p.zhat << z.x, z.y, z.phi;
-	p.H_robot = se2::jacBetweenA(s, lp);
-	p.H_landmark = se2::jacBetweenB(s, lp);
+	p.zhat.resize(3);
+	p.zhat << zx, zy, se2::wrap(l.mean[2] - s.phi);
+	p.H_robot = MatN(3, 3);
+	p.H_robot << -c, -sn, zy,  //
+		sn, -c, -zx,  //
+		0, 0, -1;
+	p.H_landmark = MatN(3, 3);
+	p.H_landmark << c, sn, 0,  //
+		-sn, c, 0,  //
+		0, 0, 1;
 	return p;
 }
 
@@ -124,7 +134,7 @@ MeasurementPrediction CPointLandmarkModel::predict(
 {
 	const RangeBearingGeometry g = geometry(s, m.sensorPose, l.mean);
 	MeasurementPrediction p;
-	p.zhat = VecN(2);
+	p.zhat.resize(2);
 	p.zhat << g.r, se2::wrap(std::atan2(g.dy, g.dx) - g.sensor.phi);
 
 	// d h / d sensorPose, then chain through sensor = s (+) sensorPose.

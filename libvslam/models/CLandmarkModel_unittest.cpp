@@ -14,7 +14,7 @@ LandmarkMeasurement poseMeasurement(const se2::Pose& z)
 {
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Pose, 7};
-	m.z = VecN(3);
+	m.z.resize(3);
 	m.z << z.x, z.y, z.phi;
 	m.R = MatN(3, 3);
 	m.R.setZero();
@@ -26,7 +26,7 @@ LandmarkMeasurement pointMeasurement(double r, double b, const se2::Pose& sensor
 {
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Point, 3};
-	m.z = VecN(2);
+	m.z.resize(2);
 	m.z << r, b;
 	m.R = MatN(2, 2);
 	m.R << 0.01, 0.0, 0.0, 0.0004;

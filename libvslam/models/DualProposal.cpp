@@ -40,9 +40,8 @@ PoseGaussianProposal makePoseGaussianProposal(
 	const Eigen::LLT<Eigen::Matrix3d> llt(cov);
 	if (llt.info() != Eigen::Success) return p;
 	p.L = llt.matrixL();
-	double logDet = 0;
-	for (int i = 0; i < 3; i++) logDet += 2.0 * std::log(p.L(i, i));
-	p.logNorm = -0.5 * (logDet + 3.0 * std::log(2.0 * M_PI));
+	const double d = p.L(0, 0) * p.L(1, 1) * p.L(2, 2);
+	p.logNorm = -0.5 * (2.0 * std::log(d) + 3.0 * std::log(2.0 * M_PI));
 	p.valid = std::isfinite(p.logNorm);
 	return p;
 }

@@ -36,7 +36,7 @@ LandmarkMeasurement rangeBearing(double r, double b)
 {
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Point, 1};
-	m.z = VecN(2);
+	m.z.resize(2);
 	m.z << r, b;
 	m.R = MatN(2, 2);
 	m.R << 0.01, 0, 0, 0.003;

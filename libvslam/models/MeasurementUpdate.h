@@ -13,6 +13,8 @@ struct MeasurementEvaluation
 	/** Innovation covariance S = R + H_l P H_l^T (+ H_s C H_s^T). */
 	MatN S;
 	MatN H_landmark;
+	/** S^-1 (valid if gaussian.valid). */
+	MatN Sinv;
 	GaussianEval gaussian;
 };
 

@@ -18,7 +18,7 @@ TEST(MeasurementUpdate, PoseLandmarkUpdateEqualsInformationFormFusion)
 	l.cov << 0.04, 0.01, 0.002, 0.01, 0.09, -0.003, 0.002, -0.003, 0.01;
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Pose, 1};
-	m.z = VecN(3);
+	m.z.resize(3);
 	m.z << 1.2, 0.1, -0.25;
 	m.R = MatN(3, 3);
 	m.R.setZero();
@@ -54,7 +54,7 @@ TEST(MeasurementUpdate, PointLandmarkUpdateShrinksUncertaintyTowardsTheMeasureme
 	l.cov.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * 0.04;
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Point, 1};
-	m.z = VecN(2);
+	m.z.resize(2);
 	m.z << 2.2, 0.0;
 	m.R = MatN(2, 2);
 	m.R << 0.04, 0, 0, 0.01;

@@ -14,7 +14,12 @@ namespace vslam::se2
 {
 using Pose = mrpt::math::TPose2D;
 
-inline double wrap(double a) { return mrpt::math::wrapToPi(a); }
+/** Angle in (-pi, pi]; the common in-range case skips MRPT's fmod. */
+inline double wrap(double a)
+{
+	if (a > -M_PI && a <= M_PI) return a;
+	return mrpt::math::wrapToPi(a);
+}
 
 /** a (+) b: b expressed in the frame of a, mapped to the global frame. */
 inline Pose compose(const Pose& a, const Pose& b)

@@ -9,7 +9,7 @@ inline LandmarkMeasurement poseMeasurement(
 {
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Pose, id};
-	m.z = VecN(3);
+	m.z.resize(3);
 	m.z << z.x, z.y, z.phi;
 	m.R = MatN::Zero(3, 3);
 	m.R.diagonal() << stdXY * stdXY, stdXY * stdXY, stdPhi * stdPhi;
@@ -22,7 +22,7 @@ inline LandmarkMeasurement rangeBearingMeasurement(
 {
 	LandmarkMeasurement m;
 	m.key = {LandmarkKind::Point, id};
-	m.z = VecN(2);
+	m.z.resize(2);
 	m.z << range, bearing;
 	m.R = MatN::Zero(2, 2);
 	m.R.diagonal() << stdR * stdR, stdB * stdB;
