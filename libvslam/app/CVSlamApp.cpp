@@ -14,6 +14,7 @@
 #include <libvslam/io/LandmarkMapFile.h>
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <mrpt/system/datetime.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -52,6 +53,14 @@ std::string CVSlamApp::defaultConfigText()
 	return text;
 }
 
+config::KnownKeys CVSlamApp::knownKeys()
+{
+	config::KnownKeys known;
+	known.addFromOptions(TVSlamAppOptions(), TVSlamAppOptions::kSection);
+	TVSlamFilterOptions().registerKnownKeys(known);
+	return known;
+}
+
 std::string CVSlamApp::resolveInput(const std::string& path) const
 {
 	if (path.empty() || fs::path(path).is_absolute()) return path;
@@ -73,10 +82,7 @@ void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::strin
 	params.getContent(content);
 	params.setContent(content);
 
-	config::KnownKeys known;
-	known.addFromOptions(appOptions, TVSlamAppOptions::kSection);
-	filterOptions.registerKnownKeys(known);
-	config::checkNoUnknownKeys(params, known);
+	config::checkNoUnknownKeys(params, knownKeys());
 	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);
 	filterOptions.loadFromConfig(params);
 }
@@ -239,6 +245,7 @@ int CVSlamApp::run()
 	Trajectory estimated, odometry;
 	se2::Pose odo = filterOptions.pf.initialPose;
 	double firstT = 0, lastT = 0, stepSumMs = 0;
+	bool anyTimed = false;
 	const auto start = std::chrono::steady_clock::now();
 	std::string failure;
 	int exitCode = kOk;
@@ -267,8 +274,12 @@ int CVSlamApp::run()
 			stepSumMs += ms;
 			summary.stepMaxMs = std::max(summary.stepMaxMs, ms);
 
-			const double t = toSeconds(step.timestamp);
-			if (summary.steps == 0) firstT = t;
+			// A step without a timestamp (e.g. an empty last frame) keeps the
+			// previous step's, so the TUM output stays ordered.
+			const bool timed = step.timestamp != INVALID_TIMESTAMP;
+			const double t = timed ? toSeconds(step.timestamp) : lastT;
+			if (timed && !anyTimed) firstT = t;
+			anyTimed = anyTimed || timed;
 			lastT = t;
 			const se2::Pose est = filter.meanPose();
 			if (step.action)
@@ -276,8 +287,9 @@ int CVSlamApp::run()
 			pathRbpf.write(summary.steps, t, est);
 			pathTum.write(summary.steps, t, est);
 			pathOdo.write(summary.steps, t, odo);
-			estimated.push_back({t, est});
-			odometry.push_back({t, odo});
+			const long stepIndex = static_cast<long>(summary.steps);
+			estimated.push_back({t, est, stepIndex});
+			odometry.push_back({t, odo, stepIndex});
 			const auto& fr = filter.lastFrame();
 			const bool updated = fr.timestamp == step.timestamp && filter.stats().frames > 0;
 			std::fprintf(stepLog, "%llu %.6f %.4f %.3f %zu %.4f %zu %d %zu %zu %.4f\n",

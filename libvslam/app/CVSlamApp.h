@@ -18,6 +18,7 @@
  */
 #include <libvslam/app/RunSummary.h>
 #include <libvslam/app/TVSlamAppOptions.h>
+#include <libvslam/config/KeyValidation.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -55,6 +56,8 @@ class CVSlamApp
 	static std::string usage();
 	/** Every key with its default and documentation, as INI text. */
 	static std::string defaultConfigText();
+	/** The keys of every vslam section. */
+	static config::KnownKeys knownKeys();
 
    private:
 	std::string m_configFile, m_rawlogFile, m_groundTruthFile, m_outputDir;

@@ -33,6 +33,15 @@ std::string quoted(const std::string& s)
 	return out + "\"";
 }
 
+/** A real-time figure, or null when the rawlog's timestamps give none. */
+std::string realTime(double v)
+{
+	if (!(v > 0)) return "null";
+	std::ostringstream o;
+	o << v;
+	return o.str();
+}
+
 void writeAte(std::ostream& o, const char* name, const std::optional<AteStats>& a)
 {
 	if (!a) return;
@@ -41,6 +50,11 @@ void writeAte(std::ostream& o, const char* name, const std::optional<AteStats>& 
 	  << ", heading_rmse_deg: " << a->headingRmse * 180 / M_PI << "}\n";
 }
 }  // namespace
+
+double RunSummary::speedUp() const
+{
+	return totalSeconds > 0 ? realTimeSpan / totalSeconds : 0.0;
+}
 
 void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) const
 {
@@ -62,7 +76,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  action_sensoryframe_steps: " << actionFrameSteps << "\n"
 	  << "  observation_steps: " << observationSteps << "\n"
 	  << "  skipped_objects: " << skippedObjects << "\n"
-	  << "  data_seconds: " << realTimeSpan << "\n"
+	  << "  data_seconds: " << realTime(realTimeSpan) << "\n"
 	  << "particles: " << f.particlesCount() << "\n"
 	  << "landmarks: {total: " << f.landmarkIndex().size() << ", pose: " << pose
 	  << ", point: " << point << "}\n"
@@ -95,8 +109,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  total_seconds: " << totalSeconds << "\n"
 	  << "  step_mean_ms: " << stepMeanMs << "\n"
 	  << "  step_max_ms: " << stepMaxMs << "\n"
-	  << "  faster_than_real_time: "
-	  << (totalSeconds > 0 ? realTimeSpan / totalSeconds : 0.0) << "\n"
+	  << "  faster_than_real_time: " << realTime(speedUp()) << "\n"
 	  << "peak_memory_MiB: " << peakMemoryMiB << "\n";
 	if (ate || odometryAte)
 	{

@@ -20,9 +20,11 @@ struct RunSummary
 	uint64_t steps = 0, actionFrameSteps = 0, observationSteps = 0, skippedObjects = 0;
 	double totalSeconds = 0, stepMeanMs = 0, stepMaxMs = 0;
 	double peakMemoryMiB = 0;
-	double realTimeSpan = 0;  //!< seconds of data processed (timestamps)
+	double realTimeSpan = 0;  //!< seconds of data processed (timestamps; 0: unknown)
 	std::optional<AteStats> ate, ateAligned, odometryAte;
 
+	/** Data seconds per processing second (0: unknown). */
+	double speedUp() const;
 	/** Writes the summary with the filter's counters. */
 	void write(const std::string& file, const CVSlamParticleFilter& filter) const;
 	/** A few human-readable lines for the console. */

@@ -27,7 +27,7 @@ void TVSlamAppOptions::saveToConfigFile(
 	c.write(s, "RANDOM_SEED", static_cast<long long>(RANDOM_SEED), 25, 12,
 		"Seed of the random generator (-1: from the clock); same seed, same outputs");
 	c.write(s, "ground_truth_file", ground_truth_file, 25, 12,
-		"Optional ground truth (TUM or rbpf-slam path format) for error figures");
+		"Optional ground truth (TUM, rbpf-slam path, or MRPT per-step pose list) for error figures");
 	c.write(s, "initial_pose_from_ground_truth", initial_pose_from_ground_truth, 25, 12,
 		"Start at the ground-truth pose of the first step instead of the initial_* keys");
 	c.write(s, "max_steps", static_cast<long long>(max_steps), 25, 12,

@@ -89,7 +89,11 @@ std::string rawValue(
 	const std::string& key)
 {
 	if (!cfg.keyExists(section, key)) return {};
-	return trim(cfg.read_string(section, key, "", false));
+	const std::string v = trim(cfg.read_string(section, key, "", false));
+	// MRPT strips a trailing " // comment" only after a value, so an empty
+	// value followed by a comment (as MRPT's own write() produces it) reads
+	// back as the comment.
+	return v.rfind("//", 0) == 0 ? std::string() : v;
 }
 
 double readDouble(

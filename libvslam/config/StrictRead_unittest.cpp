@@ -34,6 +34,14 @@ TEST(StrictRead, ReadsValidValuesAndKeepsDefaultsForAbsentKeys)
 	EXPECT_EQ(readChoice(c, "s", "d", 0, {"rad", "deg"}), 1u);
 }
 
+TEST(StrictRead, AnEmptyValueFollowedByACommentIsEmpty)
+{
+	// The form MRPT's write(section, key, "", ..., comment) produces.
+	mrpt::config::CConfigFileMemory c("[s]\nfile =   // where the data is\nn = // count\n");
+	EXPECT_EQ(readString(c, "s", "file", "default"), "");
+	EXPECT_NE(errorOf([&] { readInt(c, "s", "n", 3); }), "");
+}
+
 TEST(StrictRead, UnparsableValuesNameSectionAndKey)
 {
 	mrpt::config::CConfigFileMemory c(

@@ -3,19 +3,39 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace vslam
 {
+bool hasOnlySteps(const Trajectory& groundTruth)
+{
+	return !groundTruth.empty() &&
+		std::all_of(groundTruth.begin(), groundTruth.end(),
+			[](const TimedPose& p) { return std::isnan(p.t) && p.step >= 0; });
+}
+
 AteStats computeAte(
 	const Trajectory& estimate, const Trajectory& groundTruth, const AteOptions& o)
 {
 	std::vector<se2::Pose> est, gt;
-	for (const auto& e : estimate)
-		if (const auto g = interpolate(groundTruth, e.t, o.maxGap))
-		{
-			est.push_back(e.pose);
-			gt.push_back(*g);
-		}
+	if (hasOnlySteps(groundTruth))
+	{
+		std::map<long, se2::Pose> byStep;
+		for (const auto& g : groundTruth) byStep[g.step] = g.pose;
+		for (const auto& e : estimate)
+			if (const auto g = byStep.find(e.step); e.step >= 0 && g != byStep.end())
+			{
+				est.push_back(e.pose);
+				gt.push_back(g->second);
+			}
+	}
+	else
+		for (const auto& e : estimate)
+			if (const auto g = interpolate(groundTruth, e.t, o.maxGap))
+			{
+				est.push_back(e.pose);
+				gt.push_back(*g);
+			}
 	AteStats s;
 	s.associated = est.size();
 	if (est.empty()) return s;

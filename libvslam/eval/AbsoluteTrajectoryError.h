@@ -2,8 +2,10 @@
 /** \file AbsoluteTrajectoryError.h
  * ATE as in Sturm et al. 2012 (TUM RGB-D benchmark), planar: every
  * estimated pose is associated with the ground truth interpolated at its
- * timestamp; the statistic is over the translational (xy) errors, raw or
- * after the least-squares SE(2) alignment of the estimate onto the truth. */
+ * timestamp (or, for ground truth without timestamps, with the ground-truth
+ * pose of the same rawlog step); the statistic is over the translational
+ * (xy) errors, raw or after the least-squares SE(2) alignment of the
+ * estimate onto the truth. */
 #include <libvslam/eval/Trajectory.h>
 
 #include <cstddef>
@@ -25,6 +27,9 @@ struct AteOptions
 	/** Align the estimate onto the truth with the best SE(2) first. */
 	bool align = false;
 };
+
+/** True if the ground truth has no timestamps (associate by step). */
+bool hasOnlySteps(const Trajectory& groundTruth);
 
 AteStats computeAte(
 	const Trajectory& estimate, const Trajectory& groundTruth,

@@ -94,3 +94,20 @@ TEST(AbsoluteTrajectoryError, GapsInTheGroundTruthAreNotBridged)
 	const auto s = computeAte(circle(0, 0.1, 100), gt, {0.5, false});
 	EXPECT_EQ(s.associated, 80u);
 }
+
+TEST(AbsoluteTrajectoryError, GroundTruthWithoutTimesIsMatchedByStep)
+{
+	// All estimates share one timestamp (as in MRPT's simulated rawlogs):
+	// only the step tells them apart.
+	Trajectory gt, est;
+	for (long i = 0; i < 50; i++)
+	{
+		gt.push_back({std::nan(""), {0.1 * i, 0, 0}, i});
+		est.push_back({1700000000.0, {0.1 * i + (i % 2 ? 0.3 : -0.3), 0, 0}, i});
+	}
+	est.push_back({1700000000.0, {5, 5, 0}, 99});  // no such ground-truth step
+	ASSERT_TRUE(hasOnlySteps(gt));
+	const auto s = computeAte(est, gt);
+	EXPECT_EQ(s.associated, 50u);
+	EXPECT_NEAR(s.rmse, 0.3, 1e-9);
+}

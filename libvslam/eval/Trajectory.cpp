@@ -40,9 +40,22 @@ Trajectory readRbpfSlamPath(const std::string& file)
 		if (r.size() != 8)
 			throw InputError(
 				"'" + file + "' is not an rbpf-slam path (8 columns: step x y z yaw pitch roll t)");
-		out.push_back({r[7], {r[1], r[2], r[4]}});
+		out.push_back({r[7], {r[1], r[2], r[4]}, static_cast<long>(r[0])});
 	}
 	sortByTime(out);
+	return out;
+}
+
+Trajectory readMrptStepPath(const std::string& file)
+{
+	Trajectory out;
+	for (const auto& r : readNumericTable(file, "#%"))
+	{
+		if (r.size() != 6)
+			throw InputError("'" + file +
+				"' is not an MRPT pose list (6 columns: x y z yaw pitch roll)");
+		out.push_back({std::nan(""), {r[0], r[1], r[3]}, static_cast<long>(out.size())});
+	}
 	return out;
 }
 
@@ -52,6 +65,7 @@ Trajectory readTrajectory(const std::string& file)
 	// step counter and its last a timestamp; TUM's first is a timestamp.
 	const auto rows = readNumericTable(file, "#%");
 	if (rows.empty()) return {};
+	if (rows.front().size() == 6) return readMrptStepPath(file);
 	const bool rbpf = std::all_of(rows.begin(), rows.end(), [](const auto& r) {
 		return r.size() == 8 && r[0] == std::floor(r[0]) && r[0] >= 0 && r[0] < 1e8;
 	});

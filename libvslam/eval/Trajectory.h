@@ -1,8 +1,10 @@
 #pragma once
 /** \file Trajectory.h
  * A timestamped planar trajectory and the file formats users compare:
- * TUM ("timestamp x y z qx qy qz qw", Sturm et al. 2012) and rbpf-slam's
- * log_estimated_path.txt ("step x y z yaw pitch roll timestamp"). */
+ * TUM ("timestamp x y z qx qy qz qw", Sturm et al. 2012), rbpf-slam's
+ * log_estimated_path.txt ("step x y z yaw pitch roll timestamp") and the
+ * per-step pose lists MRPT's simulators write as ground truth
+ * ("x y z yaw pitch roll", one row per rawlog step, no timestamps). */
 #include <libvslam/models/SE2.h>
 
 #include <cmath>
@@ -14,8 +16,9 @@ namespace vslam
 {
 struct TimedPose
 {
-	double t = 0;  //!< UNIX seconds
+	double t = 0;  //!< UNIX seconds (NaN: unknown)
 	se2::Pose pose;
+	long step = -1;  //!< rawlog step, if the format records it (-1: unknown)
 };
 
 using Trajectory = std::vector<TimedPose>;
@@ -25,7 +28,10 @@ using Trajectory = std::vector<TimedPose>;
 Trajectory readTumTrajectory(const std::string& file);
 /** Reads rbpf-slam's log_estimated_path.txt ('%' comments). */
 Trajectory readRbpfSlamPath(const std::string& file);
-/** Reads either format, told apart by the number of columns. */
+/** Reads an MRPT per-step pose list ("x y z yaw pitch roll", '%'
+ * comments): row i is step i; timestamps unknown. */
+Trajectory readMrptStepPath(const std::string& file);
+/** Reads any of the three formats, told apart by their columns. */
 Trajectory readTrajectory(const std::string& file);
 
 void writeTumTrajectory(const std::string& file, const Trajectory& trajectory);

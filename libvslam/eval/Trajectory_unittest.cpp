@@ -57,3 +57,19 @@ TEST(Trajectory, MalformedFilesNameTheLine)
 	}
 	EXPECT_THROW(readTumTrajectory(dir.file("missing.tum")), InputError);
 }
+
+TEST(Trajectory, MrptPoseListsAreIndexedBySteps)
+{
+	vslam::testing::TempDir dir;
+	std::ofstream(dir.file("gt.txt")) << "% Columns are: x(m) y(m) z(m) yaw(rad) pitch(rad) roll(rad)\n"
+									  << "0 0 0 0 0 0\n"
+									  << "1.5 -2 0 0.25 0 0\n";
+	const Trajectory gt = readTrajectory(dir.file("gt.txt"));
+	ASSERT_EQ(gt.size(), 2u);
+	EXPECT_EQ(gt[1].step, 1);
+	EXPECT_TRUE(std::isnan(gt[1].t));
+	EXPECT_NEAR(gt[1].pose.y, -2, 1e-12);
+	EXPECT_NEAR(gt[1].pose.phi, 0.25, 1e-12);
+	std::ofstream(dir.file("r.txt")) << "7 1.0 2.0 0 0.5 0 0 1700000000.5\n";
+	EXPECT_EQ(readTrajectory(dir.file("r.txt"))[0].step, 7);
+}

@@ -1,0 +1,111 @@
+/** The INI files shipped in config_ini/ against the code's own options:
+ * the example lists every key with its default, and every ready INI loads. */
+#include <gtest/gtest.h>
+#include <libvslam/app/CVSlamApp.h>
+#include <libvslam/config/KeyValidation.h>
+#include <libvslam/sim/TMeasurementSimOptions.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace vslam;
+namespace fs = std::filesystem;
+
+namespace
+{
+const fs::path kConfigDir = fs::path(VSLAM_SOURCE_DIR) / "config_ini";
+
+mrpt::config::CConfigFileMemory readIni(const fs::path& file)
+{
+	std::ifstream in(file);
+	EXPECT_TRUE(in.good()) << file;
+	std::stringstream text;
+	text << in.rdbuf();
+	return mrpt::config::CConfigFileMemory(text.str());
+}
+
+std::string lower(std::string s)
+{
+	for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	return s;
+}
+
+/** The effective options of the app for an INI, as INI text. */
+std::string effectiveOptions(const fs::path& ini)
+{
+	CVSlamApp app;
+	const std::string file = ini.string();
+	const char* argv[] = {"vslam", file.c_str(), "unused.rawlog"};
+	EXPECT_TRUE(app.initialize(3, argv));
+	mrpt::config::CConfigFileMemory c;
+	app.appOptions.saveToConfigFile(c, TVSlamAppOptions::kSection);
+	app.filterOptions.saveToConfig(c);
+	std::string text;
+	c.getContent(text);
+	return text;
+}
+}  // namespace
+
+TEST(ConfigFiles, TheExampleListsEveryKeyOfEverySection)
+{
+	const auto ini = readIni(kConfigDir / "vslam_example.ini");
+	const config::KnownKeys known = CVSlamApp::knownKeys();
+	std::vector<std::string> iniSections;
+	ini.getAllSections(iniSections);
+	for (const auto& section : known.sections())
+	{
+		for (const auto& key : known.keys(section))
+			EXPECT_TRUE(ini.keyExists(section, key))
+				<< "[" << section << "] " << key << " is not in vslam_example.ini";
+		EXPECT_NE(std::find_if(iniSections.begin(), iniSections.end(),
+					  [&](const std::string& s) { return lower(s) == lower(section); }),
+			iniSections.end())
+			<< section;
+	}
+	// No stale keys either.
+	EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known));
+}
+
+TEST(ConfigFiles, TheExampleShowsTheDefaults)
+{
+	mrpt::config::CConfigFileMemory defaults;
+	TVSlamAppOptions().saveToConfigFile(defaults, TVSlamAppOptions::kSection);
+	TVSlamFilterOptions().saveToConfig(defaults);
+	std::string expected;
+	defaults.getContent(expected);
+	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), expected);
+}
+
+TEST(ConfigFiles, EveryShippedVslamIniLoads)
+{
+	size_t checked = 0;
+	for (const auto& e : fs::directory_iterator(kConfigDir))
+	{
+		const auto name = e.path().filename().string();
+		if (e.path().extension() != ".ini" || name.rfind("simul_", 0) == 0) continue;
+		SCOPED_TRACE(name);
+		EXPECT_NO_THROW(effectiveOptions(e.path()));
+		checked++;
+	}
+	EXPECT_GE(checked, 4u);
+}
+
+TEST(ConfigFiles, SimulatorIniFilesListKnownKeysOnly)
+{
+	config::KnownKeys known;
+	known.addFromOptions(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
+	const auto example = readIni(kConfigDir / "simul_measurements_example.ini");
+	for (const auto& key : known.keys(TMeasurementSimOptions::kSection))
+		EXPECT_TRUE(example.keyExists(TMeasurementSimOptions::kSection, key)) << key;
+	for (const auto& e : fs::directory_iterator(kConfigDir))
+	{
+		if (e.path().filename().string().rfind("simul_", 0) != 0) continue;
+		SCOPED_TRACE(e.path().filename().string());
+		const auto ini = readIni(e.path());
+		EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known, TMeasurementSimOptions::kSection));
+		TMeasurementSimOptions o;
+		EXPECT_NO_THROW(o.loadFromConfigFile(ini, TMeasurementSimOptions::kSection));
+	}
+}
