@@ -3,6 +3,7 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/MrclamImporter.h>
 #include <mrpt/obs/CObservationBearingRange.h>
+#include <tests/support/SharedData.h>
 #include <tests/support/TempDir.h>
 
 #include <cstdlib>
@@ -114,9 +115,7 @@ TEST(MrclamImporter, BadInputNamesTheFile)
 
 TEST(MrclamImporter, RealDataset6Robot1)
 {
-	const char* env = std::getenv("VSLAM_SOURCE_DIR");
-	const std::filesystem::path dir =
-		std::filesystem::path(env ? env : VSLAM_SOURCE_DIR) / "../shared/data/mrclam/MRCLAM_Dataset6";
+	const std::filesystem::path dir = vslam::testing::mrclamDataset(6);
 	if (!std::filesystem::exists(dir / "Robot1_Odometry.dat"))
 		GTEST_SKIP() << "MRCLAM data absent (" << dir << "): real-data test skipped";
 	TMrclamImportOptions o;

@@ -19,7 +19,10 @@ class CObservationLandmarkCreated : public mrpt::obs::CObservation
 	DEFINE_SERIALIZABLE(CObservationLandmarkCreated, vslam)
 
    public:
-	CObservationLandmarkCreated() = default;
+	/** Default label "<camera label>_NEW_LANDMARK": tools like rawlog-edit
+	 * group by sensor label, and these rows have their own columns. */
+	static constexpr const char* kDefaultLabel = "CAMERA_NEW_LANDMARK";
+	CObservationLandmarkCreated() { sensorLabel = kDefaultLabel; }
 
 	/** The new landmark's ID (unique among visual landmarks of one run). */
 	int64_t landmarkID{-1};

@@ -18,7 +18,8 @@ class CObservationVisualLandmark : public mrpt::obs::CObservation
 	DEFINE_SERIALIZABLE(CObservationVisualLandmark, vslam)
 
    public:
-	CObservationVisualLandmark() = default;
+	static constexpr const char* kDefaultLabel = "CAMERA";
+	CObservationVisualLandmark() { sensorLabel = kDefaultLabel; }
 
 	/** ID of the recognized landmark, as issued by its creation event. */
 	int64_t landmarkID{-1};

@@ -100,3 +100,11 @@ TEST(Observations, UnknownVersionThrows)
 	buf.Seek(0);
 	EXPECT_ANY_THROW(arch.ReadObject());
 }
+
+TEST(Observations, EachKindHasItsOwnDefaultSensorLabel)
+{
+	// rawlog-edit --export-txt writes one file per sensor label with the
+	// first object's header: the two kinds must not share a label.
+	EXPECT_EQ(CObservationVisualLandmark().sensorLabel, "CAMERA");
+	EXPECT_NE(CObservationLandmarkCreated().sensorLabel, CObservationVisualLandmark().sensorLabel);
+}

@@ -197,7 +197,6 @@ SimulatedRun CMeasurementSimulator::run() const
 					recognizedAny = true;
 					auto m = CObservationVisualLandmark::Create();
 					m->timestamp = st.t;
-					m->sensorLabel = "CAMERA";
 					m->landmarkID = l.id;
 					se2::Pose z = se2::between(pose, l.frame);
 					if (rng.drawUniform(0, 1) < o.bad_measurement_probability)
@@ -247,7 +246,6 @@ SimulatedRun CMeasurementSimulator::run() const
 					out.landmarks.push_back({{LandmarkKind::Pose, l.id}, l.frame, !recorded});
 					auto c = CObservationLandmarkCreated::Create();
 					c->timestamp = st.t;
-					c->sensorLabel = "CAMERA";
 					c->landmarkID = l.id;
 					c->NPoints = 100;
 					c->NViews = 3;

@@ -13,10 +13,14 @@
 
 namespace vslam::testing
 {
+using PriorMap = std::vector<std::pair<LandmarkKey, LandmarkEstimate>>;
+
 struct ScenarioResult
 {
 	std::vector<double> filterError, odometryError;  //!< per step, metres
 	std::vector<se2::Pose> estimates;
+	std::vector<size_t> kidnapIndices;  //!< indices (into the errors) of kidnaps
+	TFilterStats stats;
 	double rmse(const std::vector<double>& e, size_t from = 0) const
 	{
 		double s = 0;
@@ -32,14 +36,37 @@ struct ScenarioResult
 	}
 };
 
+/** The landmarks mapped before recording, as a map with the given error
+ * (drawn from its own generator) and a matching covariance. */
+inline PriorMap noisyPriorMap(
+	const SimulatedRun& run, uint32_t seed, double stdXY, double stdPhi)
+{
+	mrpt::random::CRandomGenerator rng(seed);
+	PriorMap map;
+	for (const auto& L : run.landmarks)
+	{
+		if (!L.mappedBeforeRecording) continue;
+		LandmarkEstimate l;
+		l.kind = L.key.kind;
+		l.mean << L.pose.x + stdXY * rng.drawGaussian1D_normalized(),
+			L.pose.y + stdXY * rng.drawGaussian1D_normalized(),
+			L.pose.phi + stdPhi * rng.drawGaussian1D_normalized();
+		l.cov = Eigen::Vector3d(stdXY * stdXY, stdXY * stdXY, stdPhi * stdPhi).asDiagonal();
+		map.push_back({L.key, l});
+	}
+	return map;
+}
+
 inline ScenarioResult runScenario(
-	const SimulatedRun& run, TVSlamFilterOptions opts, uint32_t seed = 1)
+	const SimulatedRun& run, TVSlamFilterOptions opts, uint32_t seed = 1,
+	const PriorMap& priorMap = {})
 {
 	mrpt::random::getRandomGenerator().randomize(seed);
+	// The first step's motion happened before truePose[0]: start at the
+	// first true pose and skip step 0.
 	opts.pf.initialPose = run.steps.front().truePose;
-	// The first step's motion happened before truePose[0]: start one step
-	// earlier is not known, so start at the first true pose and skip step 0.
 	CVSlamParticleFilter filter(opts);
+	if (!priorMap.empty()) filter.setPriorMap(priorMap);
 	mrpt::bayes::CParticleFilter pf;
 	pf.m_options = opts.pf.toMrpt();
 	ScenarioResult r;
@@ -53,7 +80,9 @@ inline ScenarioResult runScenario(
 		r.estimates.push_back(est);
 		r.filterError.push_back(std::hypot(est.x - st.truePose.x, est.y - st.truePose.y));
 		r.odometryError.push_back(std::hypot(odo.x - st.truePose.x, odo.y - st.truePose.y));
+		if (st.kidnappedHere) r.kidnapIndices.push_back(r.filterError.size() - 1);
 	}
+	r.stats = filter.stats();
 	return r;
 }
 }  // namespace vslam::testing

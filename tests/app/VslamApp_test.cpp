@@ -1,0 +1,317 @@
+/** The vslam app as users run it: the built binary on real files, checked
+ * by exit code, message and output files. */
+#include <gtest/gtest.h>
+#include <libvslam/core/ActionOdometry.h>
+#include <libvslam/eval/AbsoluteTrajectoryError.h>
+#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/obs/registerClasses.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <tests/support/RunCommand.h>
+#include <tests/support/TempDir.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace vslam;
+using vslam::testing::readFile;
+using vslam::testing::runCommand;
+using vslam::testing::TempDir;
+namespace fs = std::filesystem;
+
+namespace
+{
+// Reading the demo rawlog in-process needs vslam's observation classes.
+const bool kRegistered = (vslam::registerObservationClasses(), true);
+const std::string kSource = VSLAM_SOURCE_DIR;
+const std::string kVslam = std::string(VSLAM_BINARY_DIR) + "/bin/vslam";
+const std::string kDemoIni = kSource + "/config_ini/demo_visual.ini";
+const std::string kDemoRawlog = kSource + "/rawlogs/demo_visual.rawlog";
+const std::string kDemoTruth = kSource + "/rawlogs/demo_visual_groundtruth.tum";
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+/** vslam with the demo INI and the given arguments. */
+vslam::testing::CommandResult runDemo(const std::string& args)
+{
+	return runCommand(q(kVslam) + " " + q(kDemoIni) + " --quiet " + args);
+}
+
+size_t lineCount(const std::string& file)
+{
+	const std::string s = readFile(file);
+	return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
+
+bool contains(const std::string& text, const std::string& part)
+{
+	return text.find(part) != std::string::npos;
+}
+
+/** A copy of the demo rawlog cut to `fraction` of its bytes. */
+std::string truncatedDemo(const TempDir& dir, double fraction)
+{
+	const std::string bytes = readFile(kDemoRawlog);
+	const std::string file = dir.file("truncated.rawlog");
+	std::ofstream(file, std::ios::binary) << bytes.substr(0, size_t(bytes.size() * fraction));
+	return file;
+}
+
+/** "rmse: X" of the given line of run_summary.yaml ("vslam", "dead_reckoning"). */
+double summaryRmse(const std::string& summaryFile, const std::string& name)
+{
+	const std::string s = readFile(summaryFile);
+	const size_t line = s.find("  " + name + ": {");
+	if (line == std::string::npos) return NAN;
+	const size_t r = s.find("rmse: ", line);
+	return std::stod(s.substr(r + 6));
+}
+}  // namespace
+
+// --------------------------------------------------------------------------
+// Main job and outputs
+// --------------------------------------------------------------------------
+TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
+{
+	TempDir dir;
+	const auto r = runDemo("--out " + q(dir.file("out")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	for (const char* f : {"log_estimated_path.txt", "estimated_path.tum", "log_odometry_path.txt",
+			 "log_filter_steps.txt", "final_map.txt", "most_likely_path.txt",
+			 "most_likely_path.tum", "run_summary.yaml", "config_used.ini"})
+		EXPECT_TRUE(fs::exists(dir.file("out/") + f)) << f;
+	// rbpf-slam's format: one row per step, 8 columns.
+	const Trajectory est = readRbpfSlamPath(dir.file("out/log_estimated_path.txt"));
+	EXPECT_EQ(est.size(), 3000u);
+	EXPECT_EQ(est.back().step, 2999);
+	EXPECT_EQ(readTrajectory(dir.file("out/estimated_path.tum")).size(), 3000u);
+	// Accuracy, recomputed from the outputs (not from the summary).
+	const AteStats ate = computeAte(est, readTrajectory(kDemoTruth));
+	EXPECT_EQ(ate.associated, 3000u);
+	EXPECT_NEAR(summaryRmse(dir.file("out/run_summary.yaml"), "vslam"), ate.rmse, 1e-3);
+	// Measured: 0.68 m RMSE (0.16 m median, the kidnap included), dead
+	// reckoning 2.58 m.
+	EXPECT_LT(ate.rmse, 0.5 * summaryRmse(dir.file("out/run_summary.yaml"), "dead_reckoning"));
+	EXPECT_LT(ate.median, 0.3);
+	EXPECT_EQ(lineCount(dir.file("out/log_odometry_path.txt")), 3000u);
+	const std::string summary = readFile(dir.file("out/run_summary.yaml"));
+	EXPECT_TRUE(contains(summary, "status: completed")) << summary;
+	EXPECT_TRUE(contains(summary, "kidnaps_detected: 1")) << summary;  // the demo's kidnap
+	EXPECT_TRUE(contains(summary, "peak_memory_MiB: ")) << summary;
+}
+
+TEST(VslamApp, SameSeedSameOutputsByteForByte)
+{
+	TempDir dir;
+	ASSERT_EQ(runDemo("--out " + q(dir.file("a"))).exitCode, 0);
+	ASSERT_EQ(runDemo("--out " + q(dir.file("b"))).exitCode, 0);
+	ASSERT_EQ(runDemo("--out " + q(dir.file("c")) + " --set vslam.RANDOM_SEED=2").exitCode, 0);
+	for (const char* f : {"log_estimated_path.txt", "estimated_path.tum", "final_map.txt",
+			 "most_likely_path.txt", "log_odometry_path.txt"})
+		EXPECT_EQ(readFile(dir.file("a/") + f), readFile(dir.file("b/") + f)) << f;
+	EXPECT_NE(readFile(dir.file("a/log_estimated_path.txt")),
+		readFile(dir.file("c/log_estimated_path.txt")));
+}
+
+TEST(VslamApp, SetOverridesAnyKeyAndRawlogArgumentOverridesTheIni)
+{
+	TempDir dir;
+	const auto r = runDemo(q(kDemoRawlog) + " --out " + q(dir.file("o")) +
+		" --set vslam_particle_filter.sampleSize=50 --set vslam.max_steps=100");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_TRUE(contains(readFile(dir.file("o/run_summary.yaml")), "particles: 50"));
+	EXPECT_EQ(lineCount(dir.file("o/log_estimated_path.txt")), 100u);
+	EXPECT_TRUE(contains(readFile(dir.file("o/config_used.ini")), "sampleSize"));
+}
+
+TEST(VslamApp, ObservationFormatRawlogsWork)
+{
+	// The demo rawlog rewritten in MRPT's observations-only format:
+	// absolute odometry readings (CObservationOdometry) and measurements.
+	TempDir dir;
+	const std::string file = dir.file("obs.rawlog");
+	{
+		CRawlogReader in(kDemoRawlog);
+		mrpt::io::CFileGZOutputStream out(file);
+		auto arch = mrpt::serialization::archiveFrom(out);
+		mrpt::poses::CPose2D odo(0, 0, 0);
+		RawlogStep s;
+		while (in.next(s))
+		{
+			auto o = mrpt::obs::CObservationOdometry::Create();
+			if (s.action)
+				if (const auto u = odometryIncrement(*s.action)) odo = odo + *u;
+			o->odometry = odo;
+			o->timestamp = s.action->getActionByClass<mrpt::obs::CActionRobotMovement2D>()->timestamp;
+			arch << *o;
+			for (const auto& obs : *s.sf) arch << *obs;
+		}
+	}
+	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
+	EXPECT_TRUE(contains(summary, "action_sensoryframe_steps: 0")) << summary;
+	const double rmse = summaryRmse(dir.file("o/run_summary.yaml"), "vslam");
+	const double odo = summaryRmse(dir.file("o/run_summary.yaml"), "dead_reckoning");
+	EXPECT_LT(rmse, 0.5 * odo) << summary;
+}
+
+TEST(VslamApp, RunsMrptsKfSlamDemo)
+{
+	const std::string ini = kSource + "/config_ini/kfslam_demo_range_bearing.ini";
+	if (!fs::exists("/usr/share/mrpt/datasets/kf-slam_demo.rawlog"))
+		GTEST_SKIP() << "MRPT's kf-slam demo rawlog is absent (package mrpt-common)";
+	TempDir dir;
+	const auto r = runCommand(q(kVslam) + " " + q(ini) + " --quiet --out " + q(dir.file("o")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	// Matched by step with MRPT's ground-truth pose list. Measured: 6 mm
+	// (dead reckoning 0.68 m).
+	const double rmse = summaryRmse(dir.file("o/run_summary.yaml"), "vslam");
+	EXPECT_LT(rmse, 0.05);
+	EXPECT_LT(rmse, 0.1 * summaryRmse(dir.file("o/run_summary.yaml"), "dead_reckoning"));
+}
+
+// --------------------------------------------------------------------------
+// Bad input: one clear message, non-zero exit, earlier outputs intact
+// --------------------------------------------------------------------------
+TEST(VslamApp, MissingRawlogIsNamedAndOutputsAreLeftAlone)
+{
+	TempDir dir;
+	fs::create_directories(dir.file("o"));
+	std::ofstream(dir.file("o/log_estimated_path.txt")) << "earlier run\n";
+	const auto r = runDemo(q(dir.file("nope.rawlog")) + " --out " + q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 3);
+	EXPECT_TRUE(contains(r.output, dir.file("nope.rawlog"))) << r.output;
+	EXPECT_EQ(readFile(dir.file("o/log_estimated_path.txt")), "earlier run\n");
+}
+
+TEST(VslamApp, TruncatedRawlogFailsNamingFileAndEntryAndKeepsOutputsSoFar)
+{
+	TempDir dir;
+	const std::string file = truncatedDemo(dir, 0.5);
+	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 3) << r.output;
+	EXPECT_TRUE(contains(r.output, file)) << r.output;
+	EXPECT_TRUE(contains(r.output, "entry")) << r.output;
+	// What was processed before the damage is on disk, well-formed.
+	const Trajectory est = readRbpfSlamPath(dir.file("o/log_estimated_path.txt"));
+	EXPECT_GT(est.size(), 500u);
+	EXPECT_LT(est.size(), 3000u);
+	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
+	EXPECT_TRUE(contains(summary, "status: failed")) << summary;
+	EXPECT_TRUE(contains(summary, "error: ")) << summary;
+}
+
+TEST(VslamApp, CorruptRawlogFailsNamingTheFile)
+{
+	TempDir dir;
+	std::string bytes = readFile(kDemoRawlog);
+	for (size_t i = bytes.size() / 3; i < bytes.size() / 3 + 64; i++) bytes[i] ^= 0x5a;
+	const std::string file = dir.file("corrupt.rawlog");
+	std::ofstream(file, std::ios::binary) << bytes;
+	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 3) << r.output;
+	EXPECT_TRUE(contains(r.output, file)) << r.output;
+
+	std::ofstream(dir.file("text.rawlog")) << "this is not a rawlog\n";
+	const auto t = runDemo(q(dir.file("text.rawlog")) + " --out " + q(dir.file("t")));
+	EXPECT_EQ(t.exitCode, 3) << t.output;
+	EXPECT_TRUE(contains(t.output, dir.file("text.rawlog"))) << t.output;
+}
+
+TEST(VslamApp, NanOdometryNamesTheEntry)
+{
+	TempDir dir;
+	const std::string file = dir.file("nan.rawlog");
+	{
+		CRawlogReader in(kDemoRawlog);
+		mrpt::io::CFileGZOutputStream out(file);
+		auto arch = mrpt::serialization::archiveFrom(out);
+		RawlogStep s;
+		for (int i = 0; i < 200 && in.next(s); i++)
+		{
+			if (i == 150)
+			{
+				auto mv = s.action->getActionByClass<mrpt::obs::CActionRobotMovement2D>();
+				const auto t = mv->timestamp;
+				mv->computeFromOdometry(mrpt::poses::CPose2D(std::nan(""), 0, 0), {});
+				mv->timestamp = t;
+			}
+			arch << *s.action << *s.sf;
+		}
+	}
+	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 3) << r.output;
+	EXPECT_TRUE(contains(r.output, "entry 300")) << r.output;  // 2 objects per step
+	EXPECT_TRUE(contains(r.output, "not finite")) << r.output;
+	EXPECT_EQ(lineCount(dir.file("o/log_estimated_path.txt")), 150u);
+}
+
+TEST(VslamApp, UnparsableValueNamesSectionAndKey)
+{
+	TempDir dir;
+	const auto r = runDemo("--out " + q(dir.file("o")) + " --set vslam_particle_filter.sampleSize=lots");
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_TRUE(contains(r.output, "sampleSize")) << r.output;
+	EXPECT_TRUE(contains(r.output, "vslam_particle_filter")) << r.output;
+	EXPECT_TRUE(contains(r.output, "lots")) << r.output;
+	EXPECT_FALSE(fs::exists(dir.file("o")));
+}
+
+TEST(VslamApp, OutOfRangeValueSaysTheAllowedRange)
+{
+	TempDir dir;
+	const auto r = runDemo("--out " + q(dir.file("o")) + " --set vslam_particle_filter.BETA=1.5");
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_TRUE(contains(r.output, "BETA")) << r.output;
+	EXPECT_TRUE(contains(r.output, "1.5")) << r.output;
+	const auto n = runDemo("--out " + q(dir.file("o")) + " --set vslam_motion_model.sigma_T=-0.1");
+	EXPECT_EQ(n.exitCode, 2) << n.output;
+	EXPECT_TRUE(contains(n.output, "sigma_T")) << n.output;
+}
+
+TEST(VslamApp, MisspelledKeyIsAnErrorWithTheClosestKnownKey)
+{
+	TempDir dir;
+	std::ofstream(dir.file("typo.ini")) << "[vslam]\nrawlog_file = " << kDemoRawlog
+										<< "\n[vslam_motion_model]\nsigma_TT = 0.3\n";
+	const auto r = runCommand(q(kVslam) + " " + q(dir.file("typo.ini")) + " --quiet --out " +
+		q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_TRUE(contains(r.output, "sigma_TT")) << r.output;
+	EXPECT_TRUE(contains(r.output, "did you mean 'sigma_T'")) << r.output;
+	EXPECT_TRUE(contains(r.output, "typo.ini")) << r.output;
+	// Sections of other programs in the same INI are not vslam's business.
+	std::ofstream(dir.file("other.ini")) << "[vslam]\nrawlog_file = " << kDemoRawlog
+										 << "\nmax_steps = 10\n[MappingApplication]\nanything = 1\n";
+	EXPECT_EQ(runCommand(q(kVslam) + " " + q(dir.file("other.ini")) + " --quiet --out " +
+				  q(dir.file("o2")))
+				  .exitCode,
+		0);
+}
+
+TEST(VslamApp, UsageAndMissingConfigurationErrors)
+{
+	EXPECT_EQ(runCommand(q(kVslam)).exitCode, 1);
+	EXPECT_EQ(runCommand(q(kVslam) + " --help").exitCode, 0);
+	EXPECT_EQ(runCommand(q(kVslam) + " " + q(kDemoIni) + " --frobnicate").exitCode, 1);
+	const auto m = runCommand(q(kVslam) + " /nonexistent/x.ini");
+	EXPECT_EQ(m.exitCode, 2);
+	EXPECT_TRUE(contains(m.output, "/nonexistent/x.ini")) << m.output;
+	const auto s = runDemo("--set nodot=1");
+	EXPECT_EQ(s.exitCode, 2);
+	EXPECT_TRUE(contains(s.output, "nodot")) << s.output;
+}
+
+TEST(VslamApp, PrintedDefaultConfigurationRunsAsIs)
+{
+	TempDir dir;
+	const auto p = runCommand(q(kVslam) + " --print-default-config");
+	ASSERT_EQ(p.exitCode, 0);
+	std::ofstream(dir.file("default.ini")) << p.output;
+	const auto r = runCommand(q(kVslam) + " " + q(dir.file("default.ini")) + " " + q(kDemoRawlog) +
+		" --quiet --out " + q(dir.file("o")) + " --set vslam.max_steps=50");
+	EXPECT_EQ(r.exitCode, 0) << r.output;
+}

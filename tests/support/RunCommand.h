@@ -1,0 +1,38 @@
+#pragma once
+/** \file RunCommand.h  Runs a shell command, capturing its output. */
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+
+namespace vslam::testing
+{
+struct CommandResult
+{
+	int exitCode = -1;  //!< -1: did not exit normally (signal)
+	std::string output;  //!< stdout and stderr, interleaved
+};
+
+inline CommandResult runCommand(const std::string& command)
+{
+	FILE* p = ::popen((command + " 2>&1").c_str(), "r");
+	if (!p) throw std::runtime_error("popen failed: " + command);
+	CommandResult r;
+	std::array<char, 4096> buf{};
+	size_t n = 0;
+	while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+	const int status = ::pclose(p);
+	r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+	return r;
+}
+
+inline std::string readFile(const std::string& file)
+{
+	std::ifstream in(file, std::ios::binary);
+	return {std::istreambuf_iterator<char>(in), {}};
+}
+}  // namespace vslam::testing
