@@ -1,0 +1,79 @@
+#!/bin/bash
+# vslam set-up on Debian 12: installs the Debian packages the project needs
+# (idempotent), builds, then runs the main job or the tests.
+#
+#   scripts/setup.sh demo     install, build, run vslam on the shipped demo rawlog
+#   scripts/setup.sh test     install, build, run every test (ctest)
+#   scripts/setup.sh build    install and build only
+#
+# Run as root, or as a user with sudo. Environment:
+#   VSLAM_BUILD_DIR   build folder (default: build)
+#   VSLAM_JOBS        parallel build jobs (default: number of cores)
+#   VSLAM_SKIP_APT=1  do not touch packages (e.g. no network)
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${VSLAM_BUILD_DIR:-$ROOT/build}"
+JOBS="${VSLAM_JOBS:-$(nproc)}"
+MODE="${1:-}"
+
+usage() {
+  sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  exit 1
+}
+case "$MODE" in demo | test | build) ;; *) usage ;; esac
+
+# Debian 12 packages: compiler and build tools, MRPT 2.5.8 (libraries, the
+# apps rawlog-edit / kf-slam / rbpf-slam, and mrpt-common's demo datasets),
+# OpenCV 4.6, Eigen 3.4, nanoflann, GoogleTest, Google Benchmark, zlib.
+PACKAGES=(
+  g++ make cmake pkg-config
+  libmrpt-dev mrpt-apps mrpt-common
+  libopencv-dev libeigen3-dev libnanoflann-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  zlib1g-dev
+)
+
+install_packages() {
+  if [[ "${VSLAM_SKIP_APT:-0}" == 1 ]]; then
+    echo "[setup] VSLAM_SKIP_APT=1: not installing packages"
+    return
+  fi
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [[ ${#missing[@]} -eq 0 ]]; then
+    echo "[setup] all ${#PACKAGES[@]} Debian packages already installed"
+    return
+  fi
+  local SUDO=""
+  if [[ $EUID -ne 0 ]]; then
+    command -v sudo > /dev/null || { echo "[setup] error: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    SUDO="sudo"
+  fi
+  echo "[setup] installing: ${missing[*]}"
+  $SUDO apt-get update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${PACKAGES[@]}"
+}
+
+build() {
+  echo "[setup] configuring and building in $BUILD ($JOBS jobs)"
+  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$BUILD" -j "$JOBS"
+}
+
+install_packages
+build
+case "$MODE" in
+  demo)
+    cd "$ROOT"
+    echo "[setup] running: build/bin/vslam config_ini/demo_visual.ini"
+    "$BUILD/bin/vslam" config_ini/demo_visual.ini
+    echo "[setup] outputs in $ROOT/vslam_out_demo/ (run_summary.yaml, log_estimated_path.txt, final_map.txt, ...)"
+    ;;
+  test)
+    echo "[setup] running all tests"
+    ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS"
+    ;;
+esac
