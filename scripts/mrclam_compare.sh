@@ -1,0 +1,72 @@
+#!/bin/bash
+# MRCLAM comparison (doc/results.md): for each robot of one data set,
+#   - import it with mrclam2rawlog (rawlog + ground truth in the start frame),
+#   - run vslam with config_ini/mrclam_range_bearing.ini for several seeds,
+#   - run MRPT's kf-slam (CRangeBearingKFSLAM2D) with config_ini/peers/kf-slam_mrclam.ini,
+# and print ATE RMSE (no alignment, all starting at the robot's first pose) of
+# dead reckoning, kf-slam and vslam per robot as a Markdown table.
+#
+#   scripts/mrclam_compare.sh [DATASET_DIR] [OUT_DIR] [SEEDS] [ROBOTS] [-- vslam --set options]
+#
+# Defaults: ../shared/data/mrclam/MRCLAM_Dataset6, /tmp/vslam_mrclam, "1 2 3", "1 2 3 4 5".
+# Needs a build (scripts/setup.sh build) and, for kf-slam, MRPT's apps (mrpt-apps).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BIN="${VSLAM_BIN:-$ROOT/build/bin}"
+DATASET="${1:-$ROOT/../shared/data/mrclam/MRCLAM_Dataset6}"
+OUT="${2:-/tmp/vslam_mrclam}"
+SEEDS="${3:-1 2 3}"
+ROBOTS="${4:-1 2 3 4 5}"
+shift $(($# < 4 ? $# : 4))
+[[ "${1:-}" == "--" ]] && shift
+EXTRA=("$@")
+
+[[ -f "$DATASET/Barcodes.dat" ]] || { echo "error: no MRCLAM data set in '$DATASET'" >&2; exit 1; }
+mkdir -p "$OUT"
+DATASET="$(cd "$DATASET" && pwd)"
+OUT="$(cd "$OUT" && pwd)"
+name="$(basename "$DATASET" | sed 's/MRCLAM_Dataset/d/')"
+
+rmse() { # ESTIMATE GROUND_TRUTH -> RMSE
+  "$BIN/vslam-eval" "$1" "$2" | sed 's/.* rmse \([0-9.]*\) .*/\1/'
+}
+mean() { awk '{s=0; for(i=1;i<=NF;i++) s+=$i; printf "%.2f", s/NF}' <<< "$*"; }
+
+printf "| robot | dead reckoning | kf-slam | vslam (seeds %s) | vslam mean |\n|---|---|---|---|---|\n" "$SEEDS"
+for r in $ROBOTS; do
+  base="$OUT/${name}_r$r"
+  "$BIN/mrclam2rawlog" "$DATASET" "$r" "$base.rawlog" > "$base.import.log"
+  gt="${base}_groundtruth.tum"
+
+  vals=()
+  for s in $SEEDS; do
+    o="$base.vslam_s$s"
+    "$BIN/vslam" "$ROOT/config_ini/mrclam_range_bearing.ini" "$base.rawlog" --out "$o" --quiet \
+      --set vslam.RANDOM_SEED="$s" --set vslam.ground_truth_file="$gt" "${EXTRA[@]}" > "$o.log" 2>&1
+    vals+=("$(rmse "$o/estimated_path.tum" "$gt")")
+  done
+
+  # Dead reckoning: vslam's odometry log has the same steps as its path log.
+  o="$base.vslam_s$(awk '{print $1}' <<< "$SEEDS")"
+  paste -d' ' <(awk '{print $8}' "$o/log_estimated_path.txt") "$o/log_odometry_path.txt" |
+    awk '{printf "%s %s %s 0 0 0 %.9f %.9f\n", $1, $3, $4, sin($6/2), cos($6/2)}' > "$base.odometry.tum"
+  dr="$(rmse "$base.odometry.tum" "$gt")"
+
+  kf="n/a"
+  if command -v kf-slam > /dev/null; then
+    k="$base.kf-slam"
+    rm -rf "$k" && mkdir -p "$k"
+    sed -e "s|^rawlog_file = .*|rawlog_file = $base.rawlog|" -e "s|^logOutput_dir = .*|logOutput_dir = $k|" \
+      "$ROOT/config_ini/peers/kf-slam_mrclam.ini" > "$k.ini"
+    kf-slam "$k.ini" < /dev/null > "$k.log" 2>&1 || true
+    # robot_pose_NNNNN.txt (x, y, phi on three lines) per step; times from vslam's step log.
+    ls "$k"/robot_pose_*.txt 2> /dev/null | sort | xargs -r awk 'FNR==1 && NR>1 {print l; l=""} {l = l (l=="" ? "" : " ") $1} END {if (l!="") print l}' > "$k.poses"
+    paste -d' ' <(awk '{print $8}' "$o/log_estimated_path.txt") "$k.poses" |
+      awk 'NF==4 {printf "%s %s %s 0 0 0 %.9f %.9f\n", $1, $2, $3, sin($4/2), cos($4/2)}' > "$k.tum"
+    [[ -s "$k.tum" ]] && kf="$(rmse "$k.tum" "$gt")"
+    rm -rf "$k"  # thousands of per-step files; the TUM path is kept
+  fi
+  printf "| %s | %.2f | %s | %s | %s |\n" "$r" "$dr" "$([[ $kf == n/a ]] && echo n/a || printf %.2f "$kf")" \
+    "$(printf "%.2f " "${vals[@]}" | sed 's/ $//')" "$(mean "${vals[@]}")"
+done
