@@ -14,13 +14,14 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="${VSLAM_BIN:-$ROOT/build/bin}"
-DATASET="${1:-$ROOT/../shared/data/mrclam/MRCLAM_Dataset6}"
-OUT="${2:-/tmp/vslam_mrclam}"
-SEEDS="${3:-1 2 3}"
-ROBOTS="${4:-1 2 3 4 5}"
-shift $(($# < 4 ? $# : 4))
+ARGS=()
+while [[ $# -gt 0 && "$1" != "--" ]]; do ARGS+=("$1"); shift; done
 [[ "${1:-}" == "--" ]] && shift
 EXTRA=("$@")
+DATASET="${ARGS[0]:-$ROOT/../shared/data/mrclam/MRCLAM_Dataset6}"
+OUT="${ARGS[1]:-/tmp/vslam_mrclam}"
+SEEDS="${ARGS[2]:-1 2 3}"
+ROBOTS="${ARGS[3]:-1 2 3 4 5}"
 
 [[ -f "$DATASET/Barcodes.dat" ]] || { echo "error: no MRCLAM data set in '$DATASET'" >&2; exit 1; }
 mkdir -p "$OUT"

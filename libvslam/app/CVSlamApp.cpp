@@ -143,6 +143,7 @@ bool CVSlamApp::initialize(int argc, const char** argv)
 		throw ConfigError("configuration '" + m_configFile +
 			"': no rawlog: give it on the command line or set [vslam] rawlog_file");
 	m_groundTruthFile = resolveInput(appOptions.ground_truth_file);
+	m_priorMapFile = resolveInput(appOptions.prior_map_file);
 	m_outputDir = outDir.empty() ? appOptions.output_dir : outDir;
 	if (m_quiet) appOptions.show_progress = false;
 	return true;
@@ -190,6 +191,10 @@ int CVSlamApp::run()
 	CRawlogReader reader(m_rawlogFile);
 	Trajectory groundTruth;
 	if (!m_groundTruthFile.empty()) groundTruth = readTrajectory(m_groundTruthFile);
+	LandmarkMap priorMap;
+	if (!m_priorMapFile.empty())
+		priorMap = readLandmarkMap(
+			m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi);
 
 	std::error_code ec;
 	fs::create_directories(m_outputDir, ec);
@@ -229,6 +234,7 @@ int CVSlamApp::run()
 		filterOptions.pf.initialPose = p ? *p : groundTruth.front().pose;
 	}
 	CVSlamParticleFilter filter(filterOptions);
+	if (!priorMap.empty()) filter.setPriorMap(priorMap);
 	mrpt::bayes::CParticleFilter pf;
 	pf.m_options = filterOptions.pf.toMrpt();
 	CPathFileWriter pathRbpf(out("log_estimated_path.txt"), CPathFileWriter::Format::RbpfSlam);

@@ -60,7 +60,7 @@ class CVSlamApp
 	static config::KnownKeys knownKeys();
 
    private:
-	std::string m_configFile, m_rawlogFile, m_groundTruthFile, m_outputDir;
+	std::string m_configFile, m_rawlogFile, m_groundTruthFile, m_priorMapFile, m_outputDir;
 	bool m_quiet = false;
 
 	void loadConfig(const std::string& file, const std::vector<std::string>& overrides);

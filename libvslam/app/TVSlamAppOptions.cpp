@@ -11,6 +11,11 @@ void TVSlamAppOptions::loadFromConfigFile(
 	output_dir = readString(c, s, "output_dir", output_dir);
 	RANDOM_SEED = readInt(c, s, "RANDOM_SEED", RANDOM_SEED, Range::closed(-1, 4294967295.0));
 	ground_truth_file = readString(c, s, "ground_truth_file", ground_truth_file);
+	prior_map_file = readString(c, s, "prior_map_file", prior_map_file);
+	prior_map_std_xy =
+		readDouble(c, s, "prior_map_std_xy", prior_map_std_xy, Range::positive());
+	prior_map_std_phi = readDegreesAsRadians(
+		c, s, "prior_map_std_phi_deg", prior_map_std_phi, Range::positive());
 	initial_pose_from_ground_truth =
 		readBool(c, s, "initial_pose_from_ground_truth", initial_pose_from_ground_truth);
 	max_steps = static_cast<uint64_t>(readInt(c, s, "max_steps", 0, Range::closed(0, 1e15)));
@@ -28,6 +33,12 @@ void TVSlamAppOptions::saveToConfigFile(
 		"Seed of the random generator (-1: from the clock); same seed, same outputs");
 	c.write(s, "ground_truth_file", ground_truth_file, 25, 12,
 		"Optional ground truth (TUM, rbpf-slam path, or MRPT per-step pose list) for error figures");
+	c.write(s, "prior_map_file", prior_map_file, 25, 12,
+		"Optional map to start from (a final_map.txt, or rows 'id x y' / 'id x y phi'); relative to this INI");
+	c.write(s, "prior_map_std_xy", prior_map_std_xy, 25, 12,
+		"Position uncertainty of prior-map rows without covariance [m]");
+	c.write(s, "prior_map_std_phi_deg", prior_map_std_phi * 180 / M_PI, 25, 12,
+		"Heading uncertainty of prior-map rows without covariance [deg]");
 	c.write(s, "initial_pose_from_ground_truth", initial_pose_from_ground_truth, 25, 12,
 		"Start at the ground-truth pose of the first step instead of the initial_* keys");
 	c.write(s, "max_steps", static_cast<long long>(max_steps), 25, 12,

@@ -6,6 +6,7 @@
  */
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -22,6 +23,13 @@ struct TVSlamAppOptions : public mrpt::config::CLoadableOptions
 	/** Optional ground truth (TUM or rbpf-slam path format) for the
 	 * summary's error figures. */
 	std::string ground_truth_file;
+	/** Optional map to start from (localization in a known map, or map
+	 * continuation): vslam's final_map.txt, or rows 'id x y' (points) /
+	 * 'id x y phi' (poses); see io/LandmarkMapFile.h. */
+	std::string prior_map_file;
+	/** Uncertainty of map rows that carry no covariance. */
+	double prior_map_std_xy = 0.05;  //!< m
+	double prior_map_std_phi = 2 * M_PI / 180;  //!< rad (INI: degrees)
 	/** Start the filter at the ground-truth pose of the first step (both
 	 * trajectories then start at the robot's first pose), instead of
 	 * [vslam_particle_filter] initial_x/y/phi_deg. */

@@ -173,6 +173,41 @@ TEST(VslamApp, RunsMrptsKfSlamDemo)
 	EXPECT_LT(rmse, 0.1 * summaryRmse(dir.file("o/run_summary.yaml"), "dead_reckoning"));
 }
 
+TEST(VslamApp, LocalizesInAPriorMapFromAWrongStart)
+{
+	// A simulated range-bearing run and its true beacon map; the filter
+	// starts at (0, 0, 0), metres away from the true start: the known
+	// beacons must relocalize it (a kidnap at the start), and no new
+	// landmark may appear.
+	TempDir dir;
+	const std::string sim = std::string(VSLAM_BINARY_DIR) + "/bin/vslam-simul-measurements";
+	ASSERT_EQ(runCommand(q(sim) + " " + q(kSource + "/config_ini/simul_range_bearing.ini") + " " +
+				  q(dir.file("rb.rawlog")) + " --set vslam_sim.duration=120")
+				  .exitCode,
+		0);
+	const auto r = runCommand(q(kVslam) + " " +
+		q(kSource + "/config_ini/kfslam_demo_range_bearing.ini") + " " + q(dir.file("rb.rawlog")) +
+		" --quiet --out " + q(dir.file("o")) + " --set vslam.ground_truth_file=" +
+		q(dir.file("rb_groundtruth.tum")) + " --set vslam.prior_map_file=" +
+		q(dir.file("rb_landmarks.txt")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
+	EXPECT_TRUE(contains(summary, "landmarks: {total: 20, pose: 0, point: 20}")) << summary;
+	EXPECT_TRUE(contains(summary, "created_at_first_sighting: 0")) << summary;
+	EXPECT_FALSE(contains(summary, "kidnaps_detected: 0")) << summary;
+	const Trajectory est = readRbpfSlamPath(dir.file("o/log_estimated_path.txt"));
+	const Trajectory truth = readTrajectory(dir.file("rb_groundtruth.tum"));
+	EXPECT_GT(computeAte(Trajectory(est.begin(), est.begin() + 5), truth).median, 1.0);
+	const Trajectory late(est.begin() + 300, est.end());  // after 30 s
+	EXPECT_LT(computeAte(late, truth).median, 0.2);
+
+	const auto bad = runDemo("--out " + q(dir.file("x")) + " --set vslam.prior_map_file=" +
+		q(dir.file("nomap.txt")));
+	EXPECT_EQ(bad.exitCode, 3) << bad.output;
+	EXPECT_TRUE(contains(bad.output, "nomap.txt")) << bad.output;
+	EXPECT_FALSE(fs::exists(dir.file("x")));
+}
+
 // --------------------------------------------------------------------------
 // Bad input: one clear message, non-zero exit, earlier outputs intact
 // --------------------------------------------------------------------------
