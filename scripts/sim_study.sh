@@ -35,10 +35,13 @@ echo "|---|---|---|---|"
 sumV=0 sumD=0 n=0
 for s in $SEEDS; do
   rawlog="$OUT/sim_s$s.rawlog"
-  "$BIN/vslam-simul-measurements" "$SIM_INI" "$rawlog" --set vslam_sim.seed="$s" "${SIM_SET[@]}" > /dev/null
+  log="$OUT/seed_$s.log"
+  "$BIN/vslam-simul-measurements" "$SIM_INI" "$rawlog" --set vslam_sim.seed="$s" "${SIM_SET[@]}" \
+    > "$log" 2>&1 || { cat "$log" >&2; exit 1; }
   "$BIN/vslam" "$VSLAM_INI" "$rawlog" --out "$OUT/vslam_s$s" --quiet --set vslam.RANDOM_SEED="$s" \
     --set vslam.ground_truth_file="$OUT/sim_s${s}_groundtruth.tum" \
-    --set vslam.initial_pose_from_ground_truth=true "${VSLAM_SET[@]}" > /dev/null
+    --set vslam.initial_pose_from_ground_truth=true "${VSLAM_SET[@]}" >> "$log" 2>&1 ||
+    { cat "$log" >&2; exit 1; }
   summary="$OUT/vslam_s$s/run_summary.yaml"
   v="$(rmse vslam "$summary")" d="$(rmse dead_reckoning "$summary")"
   k="$(grep "kidnaps_detected" "$summary" | awk '{print $2}')"

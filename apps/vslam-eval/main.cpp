@@ -16,7 +16,14 @@
 
 namespace
 {
-const char* kUsage = "Usage: vslam-eval ESTIMATE GROUND_TRUTH [--align] [--max-gap SECONDS]\n";
+const char* kUsage =
+	"Usage: vslam-eval ESTIMATE GROUND_TRUTH [--align] [--max-gap SECONDS]\n"
+	"  ESTIMATE, GROUND_TRUTH: TUM (timestamp x y z qx qy qz qw), rbpf-slam's\n"
+	"  log_estimated_path.txt (step x y z yaw pitch roll timestamp), or (ground truth)\n"
+	"  an MRPT per-step pose list (x y z yaw pitch roll); detected per file. Ground\n"
+	"  truth is interpolated at the estimate's timestamps (matched by step for pose lists).\n"
+	"  --align: SE(2) alignment before the error. --max-gap: largest ground-truth\n"
+	"  gap to interpolate across (s).\n";
 }
 
 int main(int argc, const char** argv)

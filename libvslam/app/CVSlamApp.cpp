@@ -232,6 +232,9 @@ int CVSlamApp::run()
 		const double t0 = haveStep ? toSeconds(step.timestamp) : groundTruth.front().t;
 		const auto p = interpolate(groundTruth, std::max(t0, groundTruth.front().t), 1e9);
 		filterOptions.pf.initialPose = p ? *p : groundTruth.front().pose;
+		// That is the pose at the first step's time, i.e. after the first
+		// step's odometry increment (which leads up to it): not applied again.
+		step.action.reset();
 	}
 	CVSlamParticleFilter filter(filterOptions);
 	if (!priorMap.empty()) filter.setPriorMap(priorMap);

@@ -130,9 +130,9 @@ std::string RunSummary::brief(const CVSlamParticleFilter& f) const
 	o.precision(4);
 	o << "vslam: " << status << ": " << steps << " steps, " << f.landmarkIndex().size()
 	  << " landmarks, " << f.stats().measurementsUsed << " measurements used, "
-	  << f.stats().kidnapsDetected << " kidnaps detected, " << totalSeconds << " s ("
-	  << (totalSeconds > 0 ? realTimeSpan / totalSeconds : 0.0)
-	  << "x real time), peak memory " << peakMemoryMiB << " MiB\n";
+	  << f.stats().kidnapsDetected << " kidnaps detected, " << totalSeconds << " s for "
+	  << realTimeSpan << " s of data (" << speedUp() << "x real time), peak memory "
+	  << peakMemoryMiB << " MiB\n";
 	if (ate)
 		o << "vslam: ATE vs ground truth: RMSE " << ate->rmse << " m, mean " << ate->mean
 		  << " m, median " << ate->median << " m, max " << ate->max << " m ("
