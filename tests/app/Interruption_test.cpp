@@ -1,0 +1,176 @@
+/** A run stopped part-way (Ctrl-C, SIGTERM, or killed outright) leaves
+ * parseable outputs covering every step it processed. Each case starts the
+ * built vslam on a long simulated rawlog, waits until the per-step log shows
+ * a chosen number of steps, sends the signal, and reads what is on disk. */
+#include <gtest/gtest.h>
+#include <libvslam/eval/Trajectory.h>
+#include <tests/support/RunCommand.h>
+#include <tests/support/TempDir.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+using namespace vslam;
+using vslam::testing::readFile;
+using vslam::testing::runCommand;
+using vslam::testing::TempDir;
+
+namespace
+{
+const std::string kSource = VSLAM_SOURCE_DIR;
+const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+size_t lineCount(const std::string& file)
+{
+	std::ifstream f(file);
+	size_t n = 0;
+	for (std::string line; std::getline(f, line);) n++;
+	return n;
+}
+
+/** A simulated range-bearing rawlog long enough to be interrupted (30,000 steps). */
+std::string longRawlog(const TempDir& dir)
+{
+	const std::string file = dir.file("long.rawlog");
+	const auto r = runCommand(q(kBin + "vslam-simul-measurements") + " " +
+		q(kSource + "/config_ini/simul_range_bearing.ini") + " " + q(file) +
+		" --set vslam_sim.duration=3000");
+	EXPECT_EQ(r.exitCode, 0) << r.output;
+	return file;
+}
+
+struct StoppedRun
+{
+	int exitCode = -1;  //!< exit status, or -1 if killed by a signal
+	int signal = 0;	 //!< the signal that killed it, if any
+	bool finishedFirst = false;	 //!< the run ended before the signal was sent
+};
+
+/** Runs vslam, sends `sig` once the step log has at least `steps` rows. */
+StoppedRun runAndStop(const std::string& rawlog, const std::string& out, size_t steps, int sig)
+{
+	const std::string ini = kSource + "/config_ini/kfslam_demo_range_bearing.ini";
+	const pid_t pid = fork();
+	if (pid == 0)
+	{
+		const std::string vslam = kBin + "vslam";
+		const std::string log = out + ".log";
+		if (!std::freopen(log.c_str(), "w", stdout) || !std::freopen(log.c_str(), "a", stderr))
+			_exit(127);
+		execl(vslam.c_str(), vslam.c_str(), ini.c_str(), rawlog.c_str(), "--out", out.c_str(),
+			"--quiet", static_cast<char*>(nullptr));
+		_exit(127);
+	}
+	StoppedRun r;
+	int status = 0;
+	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+	while (std::chrono::steady_clock::now() < deadline)
+	{
+		if (waitpid(pid, &status, WNOHANG) == pid)
+		{
+			r.finishedFirst = true;
+			break;
+		}
+		if (lineCount(out + "/log_filter_steps.txt") > steps)
+		{
+			kill(pid, sig);
+			break;
+		}
+		std::this_thread::sleep_for(std::chrono::milliseconds(1));
+	}
+	if (!r.finishedFirst)
+	{
+		if (std::chrono::steady_clock::now() >= deadline) kill(pid, SIGKILL);
+		waitpid(pid, &status, 0);
+	}
+	if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
+	if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+	return r;
+}
+
+/** Both path files parse, have the same steps 0..n-1 with increasing
+ * times, and n >= minSteps; returns n. */
+size_t checkPaths(const std::string& out, size_t minSteps)
+{
+	const Trajectory rbpf = readRbpfSlamPath(out + "/log_estimated_path.txt");
+	const Trajectory tum = readTrajectory(out + "/estimated_path.tum");
+	EXPECT_GE(rbpf.size(), minSteps);
+	// The two files are flushed one after the other: a hard kill may land between them.
+	EXPECT_LE(std::max(rbpf.size(), tum.size()) - std::min(rbpf.size(), tum.size()), 1u);
+	for (size_t i = 0; i < rbpf.size(); i++)
+	{
+		EXPECT_EQ(rbpf[i].step, static_cast<long>(i));
+		if (i > 0)
+		{
+			EXPECT_GT(rbpf[i].t, rbpf[i - 1].t);
+		}
+		if (i < tum.size())
+		{
+			EXPECT_DOUBLE_EQ(tum[i].t, rbpf[i].t);
+		}
+	}
+	return rbpf.size();
+}
+}  // namespace
+
+TEST(Interruption, SigintAndSigtermEndCleanlyWithTheSummaryOfWhatWasDone)
+{
+	TempDir dir;
+	const std::string rawlog = longRawlog(dir);
+	int n = 0, stopped = 0;
+	for (const int sig : {SIGINT, SIGTERM})
+		for (const size_t steps : {50, 2000, 9000})
+		{
+			const std::string out = dir.file("o" + std::to_string(n++));
+			const StoppedRun r = runAndStop(rawlog, out, steps, sig);
+			if (r.finishedFirst) continue;  // a very fast machine: nothing to check
+			stopped++;
+			EXPECT_EQ(r.exitCode, 130) << readFile(out + ".log");
+			const size_t done = checkPaths(out, steps);
+			const std::string summary = readFile(out + "/run_summary.yaml");
+			EXPECT_NE(summary.find("status: interrupted"), std::string::npos) << summary;
+			EXPECT_NE(summary.find("steps: " + std::to_string(done) + "\n"), std::string::npos)
+				<< "paths have " << done << " steps\n"
+				<< summary;
+			EXPECT_EQ(lineCount(out + "/log_odometry_path.txt"), done);
+		}
+	EXPECT_GE(stopped, 4) << "runs ended before the signal: the test checked too little";
+}
+
+TEST(Interruption, KilledRunsLeaveParseableOutputsUpToTheKill)
+{
+	TempDir dir;
+	const std::string rawlog = longRawlog(dir);
+	int n = 0, stopped = 0;
+	for (const size_t steps : {1, 10, 100, 500, 1000, 3000, 6000, 10000, 15000, 20000})
+	{
+		const std::string out = dir.file("k" + std::to_string(n++));
+		const StoppedRun r = runAndStop(rawlog, out, steps, SIGKILL);
+		if (r.finishedFirst) continue;
+		stopped++;
+		EXPECT_EQ(r.signal, SIGKILL);
+		checkPaths(out, steps);
+		// The per-step log's rows are whole too.
+		std::ifstream f(out + "/log_filter_steps.txt");
+		std::string line;
+		std::getline(f, line);	// header
+		size_t rows = 0;
+		for (; std::getline(f, line); rows++)
+		{
+			std::istringstream in(line);
+			double v;
+			int columns = 0;
+			while (in >> v) columns++;
+			EXPECT_EQ(columns, 11) << "row " << rows << ": '" << line << "'";
+		}
+		EXPECT_GE(rows, steps);
+	}
+	EXPECT_GE(stopped, 7) << "runs ended before the kill: the test checked too little";
+}
