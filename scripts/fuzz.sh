@@ -1,0 +1,76 @@
+#!/bin/bash
+# Fuzzing (doc/reliability.md): builds the libFuzzer targets with clang
+# (ASan + UBSan) in build-fuzz/, makes seed corpora from real files, runs
+# each target for SECONDS, and prints a table of executions and findings.
+#
+#   scripts/fuzz.sh [SECONDS] [TARGETS]
+#
+# Defaults: 60 s; "fuzz_rawlog fuzz_config fuzz_mrclam fuzz_landmark_map".
+# Needs clang and libclang-rt-14-dev (installed here if missing) and a normal
+# build for the seed rawlogs (scripts/setup.sh build). Crashes are saved as
+# build-fuzz/findings/<target>/crash-*; turn each into a regression test.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+SECONDS_PER_TARGET="${1:-60}"
+TARGETS="${2:-fuzz_rawlog fuzz_config fuzz_mrclam fuzz_landmark_map}"
+BUILD="$ROOT/build-fuzz"
+BIN="$ROOT/build/bin"
+
+if ! command -v clang++ > /dev/null || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2> /dev/null | grep -q "ok installed"; then
+  SUDO=""; [[ $EUID -ne 0 ]] && SUDO=sudo
+  $SUDO apt-get update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends clang libclang-rt-14-dev
+fi
+[[ -x "$BIN/vslam-simul-measurements" ]] || "$ROOT/scripts/setup.sh" build
+
+CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVSLAM_FUZZ=ON \
+  -DVSLAM_BUILD_TESTS=OFF -DVSLAM_BUILD_BENCHMARKS=OFF > "$BUILD.configure.log"
+cmake --build "$BUILD" -j "$(nproc)" --target $TARGETS > "$BUILD.build.log"
+
+# Seed corpora from real files.
+SEEDS="$BUILD/seeds"
+rm -rf "$SEEDS" && mkdir -p "$SEEDS"/{fuzz_rawlog,fuzz_config,fuzz_mrclam,fuzz_landmark_map}
+for ini in simul_demo_visual simul_range_bearing; do
+  "$BIN/vslam-simul-measurements" "$ROOT/config_ini/$ini.ini" "$SEEDS/$ini.rawlog" \
+    --set vslam_sim.duration=15 --set vslam_sim.mapping_duration=0 > /dev/null
+  cp "$SEEDS/$ini.rawlog" "$SEEDS/fuzz_rawlog/"
+  cp "$SEEDS/${ini}_landmarks.txt" "$SEEDS/fuzz_landmark_map/"
+  # Plain copy of a gzip rawlog (the reader takes both).
+  if gzip -t "$SEEDS/$ini.rawlog" 2> /dev/null; then
+    gzip -dc "$SEEDS/$ini.rawlog" > "$SEEDS/fuzz_rawlog/$ini.plain.rawlog"
+  fi
+done
+head -c 20000 "$ROOT/rawlogs/demo_visual.rawlog" > "$SEEDS/fuzz_rawlog/demo_head.rawlog"
+for ini in "$ROOT"/config_ini/*.ini "$ROOT"/config_ini/peers/*.ini; do
+  cp "$ini" "$SEEDS/fuzz_config/$(basename "$ini")"
+done
+printf 'vslam_particle_filter.sampleSize=50\nvslam_motion_model.sigma_T=0.1\n%%%%%%%%\n' |
+  cat - "$ROOT/config_ini/demo_visual.ini" > "$SEEDS/fuzz_config/with_overrides.ini"
+"$BIN/vslam" "$ROOT/config_ini/demo_visual.ini" --quiet --out "$SEEDS/demo_out" --set vslam.max_steps=600 > /dev/null
+cp "$SEEDS/demo_out/final_map.txt" "$SEEDS/fuzz_landmark_map/final_map.txt"
+MRCLAM="$ROOT/../shared/data/mrclam/MRCLAM_Dataset6"
+if [[ -d "$MRCLAM" ]]; then
+  for f in Barcodes Landmark_Groundtruth Robot1_Odometry Robot1_Measurement Robot1_Groundtruth; do
+    head -n 60 "$MRCLAM/$f.dat"
+    [[ $f != Robot1_Groundtruth ]] && printf '%%%%%%%%\n'
+  done > "$SEEDS/fuzz_mrclam/d6_r1_head.txt"
+fi
+cp "$ROOT"/tests/fuzz/seeds/mrclam/* "$SEEDS/fuzz_mrclam/"
+
+echo "| target | seconds | executions | executions/s | corpus | findings |"
+echo "|---|---|---|---|---|---|"
+for t in $TARGETS; do
+  corpus="$BUILD/corpus/$t" findings="$BUILD/findings/$t"
+  mkdir -p "$corpus" "$findings"
+  log="$BUILD/$t.log"
+  set +e
+  (cd "$findings" && ASAN_OPTIONS=detect_leaks=1 "$BUILD/bin/$t" -max_total_time="$SECONDS_PER_TARGET" \
+    -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 "$corpus" "$SEEDS/$t") > "$log" 2>&1
+  rc=$?
+  set -e
+  execs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)"
+  units="$(ls "$corpus" | wc -l)"
+  found="$(ls "$findings" | wc -l)"
+  printf "| %s | %s | %s | %s | %s | %s%s |\n" "$t" "$SECONDS_PER_TARGET" "$execs" \
+    "$((execs / SECONDS_PER_TARGET))" "$units" "$found" "$([[ $rc -ne 0 ]] && echo " (exit $rc, see $log)")"
+done
