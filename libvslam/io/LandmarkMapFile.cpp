@@ -1,6 +1,8 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/LandmarkMapFile.h>
 
+#include <Eigen/Cholesky>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -55,7 +57,8 @@ LandmarkMap readLandmarkMap(const std::string& file, double stdXY, double stdPhi
 			v.push_back(*x);
 		}
 		const auto id = number(tok[0]);
-		if (!id || *id != std::floor(*id)) throw bad("'" + tok[0] + "' is not a landmark ID");
+		if (!id || *id != std::floor(*id) || std::abs(*id) > 9.0e15)
+			throw bad("'" + tok[0] + "' is not a landmark ID");
 		if (kind)
 		{
 			if (v.size() < 3) throw bad("expected 'id kind x y phi [covariance]'");
@@ -71,6 +74,9 @@ LandmarkMap readLandmarkMap(const std::string& file, double stdXY, double stdPhi
 		{
 			l.cov << v[3], v[4], v[5], v[4], v[6], v[7], v[5], v[7], v[8];
 			if (point) l.cov.row(2).setZero(), l.cov.col(2).setZero();
+			const int n = point ? 2 : 3;
+			if (Eigen::LLT<Eigen::MatrixXd>(l.cov.topLeftCorner(n, n)).info() != Eigen::Success)
+				throw bad("the covariance is not positive definite");
 		}
 		else
 			l.cov = Eigen::Vector3d(stdXY * stdXY, stdXY * stdXY, point ? 0.0 : stdPhi * stdPhi)

@@ -73,6 +73,9 @@ TEST(LandmarkMapFile, MalformedMapsNameFileAndLine)
 	EXPECT_NE(errorOf("1 2 3\n1 4 5\n").find("twice"), std::string::npos);
 	EXPECT_NE(errorOf("1 2\n").find("line 1"), std::string::npos);
 	EXPECT_NE(errorOf("1.5 2 3\n").find("landmark ID"), std::string::npos);
+	EXPECT_NE(errorOf("1e300 2 3\n").find("landmark ID"), std::string::npos);
+	EXPECT_NE(errorOf("1 pose 0 0 0 -1 0 0 1 0 1 5\n").find("positive definite"), std::string::npos);
+	EXPECT_NE(errorOf("1 point 0 0 0 1 2 0 1 0 0 5\n").find("positive definite"), std::string::npos);
 	EXPECT_NE(errorOf("1 pose 2 nan 0\n").find("finite"), std::string::npos);
 	EXPECT_THROW(readLandmarkMap(dir.file("missing.txt"), 0.1, 0.1), InputError);
 }
