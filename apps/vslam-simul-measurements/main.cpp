@@ -59,16 +59,7 @@ int main(int argc, const char** argv)
 		if (!in) throw ConfigError("cannot read configuration file '" + positional[0] + "'");
 		std::stringstream text;
 		text << in.rdbuf();
-		mrpt::config::CConfigFileMemory cfg(text.str());
-		config::applyOverrides(cfg, overrides);
-		std::string content;
-		cfg.getContent(content);
-		cfg.setContent(content);
-		TMeasurementSimOptions options;
-		config::KnownKeys known;
-		known.addFromOptions(options, TMeasurementSimOptions::kSection);
-		config::checkNoUnknownKeys(cfg, known, TMeasurementSimOptions::kSection);
-		options.loadFromConfigFile(cfg, TMeasurementSimOptions::kSection);
+		const TMeasurementSimOptions options = loadMeasurementSimOptions(text.str(), overrides);
 
 		const SimulatedRun run = CMeasurementSimulator(options).run();
 		const std::string& rawlog = positional[1];

@@ -1,6 +1,9 @@
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <sstream>
 
@@ -154,4 +157,21 @@ void TMeasurementSimOptions::saveToConfigFile(
 	c.write(s, "rb_std_bearing_deg", deg(rb_std_bearing), 30, 10, "Range-bearing: bearing noise [deg]");
 	c.write(s, "kidnap_times", joinNumbers(kidnap_times), 30, 10, "Times [s] at which the robot is kidnapped");
 	c.write(s, "kidnap_min_distance", kidnap_min_distance, 30, 10, "Kidnap displacement at least [m]");
+}
+
+vslam::TMeasurementSimOptions vslam::loadMeasurementSimOptions(
+	const std::string& iniText, const std::vector<config::Override>& overrides)
+{
+	mrpt::config::CConfigFileMemory cfg(iniText);
+	config::applyOverrides(cfg, overrides);
+	// Re-parse so that keys written by the overrides are seen like file keys.
+	std::string content;
+	cfg.getContent(content);
+	cfg.setContent(content);
+	TMeasurementSimOptions options;
+	config::KnownKeys known;
+	known.addFromOptions(options, TMeasurementSimOptions::kSection);
+	config::checkNoUnknownKeys(cfg, known, TMeasurementSimOptions::kSection);
+	options.loadFromConfigFile(cfg, TMeasurementSimOptions::kSection);
+	return options;
 }

@@ -8,7 +8,10 @@
 #include <libvslam/models/SE2.h>
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <libvslam/config/Overrides.h>
+
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace vslam
@@ -91,4 +94,9 @@ struct TMeasurementSimOptions : public mrpt::config::CLoadableOptions
 		mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) const override;
 };
+/** Options from INI text with --set overrides applied: unknown keys in
+ * [vslam_sim] and bad values are ConfigErrors naming the key. */
+TMeasurementSimOptions loadMeasurementSimOptions(
+	const std::string& iniText, const std::vector<config::Override>& overrides);
+
 }  // namespace vslam

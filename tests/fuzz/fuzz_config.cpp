@@ -4,10 +4,8 @@
  * (std::invalid_argument) is a finding. */
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/config/ConfigError.h>
-#include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <tests/fuzz/FuzzInput.h>
 
 #include <sstream>
@@ -23,22 +21,6 @@ std::vector<std::string> lines(const std::string& text)
 	return out;
 }
 
-void loadSimulatorOptions(const std::string& ini, const std::vector<std::string>& overrides)
-{
-	mrpt::config::CConfigFileMemory cfg;
-	cfg.setContent(ini);
-	std::vector<vslam::config::Override> parsed;
-	for (const auto& o : overrides) parsed.push_back(vslam::config::parseOverride(o));
-	vslam::config::applyOverrides(cfg, parsed);
-	std::string content;
-	cfg.getContent(content);
-	cfg.setContent(content);
-	vslam::config::KnownKeys known;
-	known.addFromOptions(vslam::TMeasurementSimOptions(), vslam::TMeasurementSimOptions::kSection);
-	vslam::config::checkNoUnknownKeys(cfg, known, vslam::TMeasurementSimOptions::kSection);
-	vslam::TMeasurementSimOptions options;
-	options.loadFromConfigFile(cfg, vslam::TMeasurementSimOptions::kSection);
-}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -67,7 +49,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	}
 	try
 	{
-		loadSimulatorOptions(ini, overrides);
+		std::vector<vslam::config::Override> parsed;
+		for (const auto& o : overrides) parsed.push_back(vslam::config::parseOverride(o));
+		vslam::loadMeasurementSimOptions(ini, parsed);
 	}
 	catch (const vslam::ConfigError&)
 	{
