@@ -1,0 +1,43 @@
+#!/bin/bash
+# Bounded resources (doc/reliability.md): generates simulated runs of growing
+# length in the same room with the same settings, runs vslam on each, and
+# prints peak memory against run length. Memory should level off: the map is
+# bounded by the room, path histories share their common ancestry, and every
+# per-step output goes to disk as it is produced.
+#
+#   scripts/long_run_memory.sh [DURATIONS_S] [SIM_INI] [VSLAM_INI]
+#
+# Defaults: "600 1200 1800 3600", config_ini/simul_demo_visual.ini (kidnaps
+# removed), config_ini/demo_visual.ini. Work files go to /tmp/vslam_long_run.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BIN="${VSLAM_BIN:-$ROOT/build/bin}"
+DURATIONS="${1:-600 1200 1800 3600}"
+SIM_INI="${2:-$ROOT/config_ini/simul_demo_visual.ini}"
+VSLAM_INI="${3:-$ROOT/config_ini/demo_visual.ini}"
+WORK=/tmp/vslam_long_run
+[[ -x "$BIN/vslam" ]] || { echo "error: $BIN/vslam not built (scripts/setup.sh build)" >&2; exit 1; }
+mkdir -p "$WORK"
+
+echo "| simulated time [s] | steps | landmarks in map | ATE RMSE [m] | wall time [s] | peak memory [MiB] | vs the first |"
+echo "|---|---|---|---|---|---|---|"
+first=""
+for d in $DURATIONS; do
+  rawlog="$WORK/run_$d.rawlog"
+  "$BIN/vslam-simul-measurements" "$SIM_INI" "$rawlog" --set vslam_sim.duration="$d" \
+    --set vslam_sim.kidnap_times= > /dev/null
+  out="$WORK/out_$d"
+  start=$(date +%s.%N)
+  "$BIN/vslam" "$VSLAM_INI" "$rawlog" --out "$out" --quiet \
+    --set vslam.ground_truth_file="$WORK/run_${d}_groundtruth.tum" 2> /dev/null
+  end=$(date +%s.%N)
+  summary="$out/run_summary.yaml"
+  steps=$(awk '$1 == "steps:" {print $2; exit}' "$summary")
+  peak=$(awk '$1 == "peak_memory_MiB:" {print $2; exit}' "$summary")
+  ate=$(grep -o '^  vslam: {[^}]*rmse: [0-9.e-]*' "$summary" | grep -o '[0-9.e-]*$')
+  landmarks=$(grep -vc '^%' "$out/final_map.txt" || true)
+  [[ -z "$first" ]] && first="$peak"
+  awk -v d="$d" -v s="$steps" -v l="$landmarks" -v a="$ate" -v t0="$start" -v t1="$end" \
+    -v p="$peak" -v f="$first" 'BEGIN {
+      printf "| %s | %s | %s | %.3f | %.1f | %.1f | %.2fx |\n", d, s, l, a, t1 - t0, p, p / f }'
+done
