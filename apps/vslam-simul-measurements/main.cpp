@@ -59,7 +59,15 @@ int main(int argc, const char** argv)
 		if (!in) throw ConfigError("cannot read configuration file '" + positional[0] + "'");
 		std::stringstream text;
 		text << in.rdbuf();
-		const TMeasurementSimOptions options = loadMeasurementSimOptions(text.str(), overrides);
+		TMeasurementSimOptions options;
+		try
+		{
+			options = loadMeasurementSimOptions(text.str(), overrides);
+		}
+		catch (const ConfigError& e)
+		{
+			throw ConfigError("'" + positional[0] + "': " + e.what());
+		}
 
 		const SimulatedRun run = CMeasurementSimulator(options).run();
 		const std::string& rawlog = positional[1];

@@ -73,14 +73,9 @@ void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::strin
 	if (!in) throw ConfigError("cannot read configuration file '" + file + "'");
 	std::stringstream text;
 	text << in.rdbuf();
-	params.setContent(text.str());
 	std::vector<config::Override> parsed;
 	for (const auto& o : overrides) parsed.push_back(config::parseOverride(o));
-	config::applyOverrides(params, parsed);
-	// Re-parse so that keys written by the overrides are seen like file keys.
-	std::string content;
-	params.getContent(content);
-	params.setContent(content);
+	params = config::parseIniWithOverrides(text.str(), parsed);
 
 	config::checkNoUnknownKeys(params, knownKeys());
 	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);

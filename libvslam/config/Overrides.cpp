@@ -38,3 +38,31 @@ void applyOverrides(
 }
 
 }  // namespace vslam::config
+
+namespace
+{
+void setContentOrThrowConfigError(mrpt::config::CConfigFileMemory& cfg, const std::string& text)
+{
+	try
+	{
+		cfg.setContent(text);
+	}
+	catch (const std::exception& e)
+	{
+		throw vslam::ConfigError(std::string("INI syntax: ") + e.what());
+	}
+}
+}  // namespace
+
+mrpt::config::CConfigFileMemory vslam::config::parseIniWithOverrides(
+	const std::string& iniText, const std::vector<Override>& overrides)
+{
+	mrpt::config::CConfigFileMemory cfg;
+	setContentOrThrowConfigError(cfg, iniText);
+	if (overrides.empty()) return cfg;
+	applyOverrides(cfg, overrides);
+	std::string content;
+	cfg.getContent(content);
+	setContentOrThrowConfigError(cfg, content);
+	return cfg;
+}

@@ -2,7 +2,7 @@
 /** \file Overrides.h
  * Command-line overrides "SECTION.KEY=VALUE" (vslam --set), so scripts and
  * experiment batches never edit INI files. */
-#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <string>
 #include <vector>
@@ -20,5 +20,13 @@ Override parseOverride(const std::string& text);
 /** Writes every override into `cfg` (later ones win). */
 void applyOverrides(
 	mrpt::config::CConfigFileBase& cfg, const std::vector<Override>& overrides);
+
+/** Parses INI text (MRPT syntax, with its @include, $define, $eval{} and
+ * ${var} directives), then applies the overrides and parses the result
+ * again, so keys written by overrides are seen like keys in the text.
+ * Syntax errors, which MRPT throws as plain runtime errors, become
+ * ConfigError. */
+mrpt::config::CConfigFileMemory parseIniWithOverrides(
+	const std::string& iniText, const std::vector<Override>& overrides);
 
 }  // namespace vslam::config

@@ -25,3 +25,26 @@ TEST(Overrides, RejectsMalformedStrings)
 	EXPECT_THROW(parseOverride(".key=3"), ConfigError);
 	EXPECT_THROW(parseOverride("sec.=3"), ConfigError);
 }
+
+// Found by fuzz_config: MRPT throws a plain runtime error for a broken
+// $eval{} directive, which escaped the apps' configuration-error handling.
+TEST(ParseIniWithOverrides, SyntaxErrorsAreConfigErrors)
+{
+	EXPECT_THROW(parseIniWithOverrides("[a]\nx = $eval{s =\n", {}), vslam::ConfigError);
+	try
+	{
+		parseIniWithOverrides("[a]\nx = 1\ny = $eval{s =\n", {});
+	}
+	catch (const vslam::ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("Line 3"), std::string::npos) << e.what();
+	}
+}
+
+TEST(ParseIniWithOverrides, OverridesAreSeenLikeKeysInTheText)
+{
+	const auto cfg = parseIniWithOverrides("[a]\nx = 1\n", {{"a", "x", "2"}, {"b", "y", "3"}});
+	EXPECT_EQ(cfg.read_int("a", "x", 0), 2);
+	EXPECT_TRUE(cfg.keyExists("b", "y"));
+	EXPECT_EQ(cfg.read_int("b", "y", 0), 3);
+}

@@ -2,6 +2,7 @@
 #include <libvslam/io/CCheckedGzInputStream.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <climits>
 #include <filesystem>
 
@@ -25,8 +26,42 @@ CCheckedGzInputStream::~CCheckedGzInputStream()
 
 size_t CCheckedGzInputStream::Read(void* buffer, size_t count)
 {
-	auto* gz = static_cast<gzFile>(m_gz);
 	auto* out = static_cast<unsigned char*>(buffer);
+	const size_t fromPeeked = std::min(count, m_peeked.size());
+	std::copy_n(m_peeked.data(), fromPeeked, out);
+	m_peeked.erase(0, fromPeeked);
+	const size_t done = fromPeeked + readFromFile(out + fromPeeked, count - fromPeeked);
+	m_position += done;
+	return done;
+}
+
+std::string CCheckedGzInputStream::peek(size_t count)
+{
+	if (m_peeked.size() < count)
+	{
+		const size_t have = m_peeked.size();
+		m_peeked.resize(count);
+		const size_t got = readFromFile(
+			reinterpret_cast<unsigned char*>(m_peeked.data()) + have, count - have);
+		m_peeked.resize(have + got);
+	}
+	return m_peeked.substr(0, count);
+}
+
+uint64_t CCheckedGzInputStream::remainingBytesBound() const
+{
+	auto* gz = static_cast<gzFile>(m_gz);
+	if (gzdirect(gz)) return m_fileSize > m_position ? m_fileSize - m_position : 0;
+	// Deflate expands at most 1032:1; zlib may hold decompressed bytes that
+	// gzoffset() already counts as consumed (its buffers are far below 1 MiB).
+	const uint64_t consumed = filePosition();
+	const uint64_t compressedLeft = m_fileSize > consumed ? m_fileSize - consumed : 0;
+	return compressedLeft * 1032 + (1u << 20) + m_peeked.size();
+}
+
+size_t CCheckedGzInputStream::readFromFile(unsigned char* out, size_t count)
+{
+	auto* gz = static_cast<gzFile>(m_gz);
 	size_t done = 0;
 	while (done < count)
 	{
@@ -48,7 +83,6 @@ size_t CCheckedGzInputStream::Read(void* buffer, size_t count)
 		if (n == 0) break;  // end of file
 		done += static_cast<size_t>(n);
 	}
-	m_position += done;
 	return done;
 }
 

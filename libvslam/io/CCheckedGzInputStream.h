@@ -28,6 +28,13 @@ class CCheckedGzInputStream : public mrpt::io::CStream
 	uint64_t Seek(int64_t, mrpt::io::CStream::TSeekOrigin) override;
 	/** Size of the file on disk. */
 	uint64_t getTotalBytesCount() const override { return m_fileSize; }
+	/** The next \p count bytes (fewer at the end of the file) without
+	 * consuming them: the following Read() calls return them again. */
+	std::string peek(size_t count);
+	/** An upper bound of the uncompressed bytes still to be read: exact for
+	 * a plain file, from deflate's maximum ratio for a gzip one. Used to
+	 * reject element counts in corrupt data before anything allocates them. */
+	uint64_t remainingBytesBound() const;
 	/** Uncompressed bytes read so far. */
 	uint64_t getPosition() const override { return m_position; }
 	/** Bytes of the file consumed so far (for progress reports). */
@@ -41,6 +48,8 @@ class CCheckedGzInputStream : public mrpt::io::CStream
 	std::string m_fileName;
 	void* m_gz = nullptr;  //!< gzFile
 	uint64_t m_fileSize = 0, m_position = 0;
+	std::string m_peeked;  //!< read ahead by peek(), not yet returned
+	size_t readFromFile(unsigned char* out, size_t count);
 	std::string m_lastError;
 };
 }  // namespace vslam

@@ -55,6 +55,7 @@ CSerializable::Ptr CRawlogReader::readObject(size_t& entry)
 	if (m_eof) return nullptr;
 	entry = m_objects;
 	const uint64_t before = m_stream->getPosition();
+	checkElementCount(entry);
 	try
 	{
 		auto obj = m_archive->ReadObject();
@@ -82,6 +83,28 @@ CSerializable::Ptr CRawlogReader::readObject(size_t& entry)
 			fail(entry, text + " (a class this program does not know)");
 		fail(entry, "cannot be read, the file is truncated or corrupt: " + text);
 	}
+}
+
+void CRawlogReader::checkElementCount(size_t entry)
+{
+	// An MRPT object starts with 0x80 | name length, the class name and a
+	// version byte; the containers then store their element count (uint32).
+	const std::string head = m_stream->peek(1 + 127 + 1 + 4);
+	if (head.empty() || !(static_cast<unsigned char>(head[0]) & 0x80)) return;
+	const size_t nameLength = static_cast<unsigned char>(head[0]) & 0x7F;
+	if (head.size() < 1 + nameLength + 1 + 4) return;  // MRPT reports the truncation
+	const std::string name = head.substr(1, nameLength);
+	if (name != "mrpt::obs::CSensoryFrame" && name != "mrpt::obs::CActionCollection") return;
+	uint32_t count = 0;
+	for (int i = 3; i >= 0; i--)  // little endian
+		count = (count << 8) | static_cast<unsigned char>(head[1 + nameLength + 1 + i]);
+	// Every element takes at least one byte, so a count beyond the bytes
+	// left is corrupt data: reject it before MRPT allocates that many.
+	const uint64_t left = m_stream->remainingBytesBound();
+	if (count > left)
+		fail(entry, name + " claims " + std::to_string(count) +
+			" elements, more than the file has bytes left (" + std::to_string(left) +
+			"): the file is corrupt");
 }
 
 void CRawlogReader::checkOdometry(const mrpt::obs::CActionCollection& a, size_t entry) const

@@ -76,6 +76,9 @@ class CRawlogReader
 
 	/** Next object or nullptr at a clean end of file. */
 	mrpt::serialization::CSerializable::Ptr readObject(size_t& entry);
+	/** Rejects a container whose element count cannot fit in the rest of
+	 * the file (corrupt data that would make MRPT allocate gigabytes). */
+	void checkElementCount(size_t entry);
 	void checkOdometry(const mrpt::obs::CActionCollection& a, size_t entry) const;
 	[[noreturn]] void fail(size_t entry, const std::string& what) const;
 };

@@ -215,6 +215,59 @@ TEST(CRawlogReader, CorruptBytesAreErrors)
 	EXPECT_NE(e.find("corrupt"), std::string::npos) << e;
 }
 
+// Found by fuzz_rawlog: a corrupt element count made MRPT allocate a
+// sensory frame of 2^31 observations (gigabytes, then a hang or the OOM killer).
+TEST(CRawlogReader, ImpossibleElementCountsAreErrorsNotAllocations)
+{
+	TempDir dir;
+	writeFormat1(dir.file("full.rawlog"), 6);
+	const std::string plain = inflate(dir.file("full.rawlog"));
+	// Entries alternate action, frame: the third of each is entry 4 / 5.
+	for (const auto& [name, entry] : {std::pair<std::string, std::string>{"mrpt::obs::CActionCollection", "entry 4"},
+			 {"mrpt::obs::CSensoryFrame", "entry 5"}})
+	{
+		std::string bytes = plain;
+		// The third occurrence: entries before it are read normally.
+		size_t pos = 0;
+		for (int k = 0; k < 3; k++) pos = bytes.find(name, pos + (k ? 1 : 0));
+		ASSERT_NE(pos, std::string::npos);
+		const size_t countAt = pos + name.size() + 1;  // after the version byte
+		for (size_t i = 0; i < 4; i++) bytes[countAt + i] = i == 3 ? '\x7f' : '\xff';
+		writeBytes(dir.file("plain.rawlog"), bytes);
+		{
+			mrpt::io::CFileGZOutputStream gz(dir.file("gz.rawlog"));
+			gz.Write(bytes.data(), bytes.size());
+		}
+		for (const char* file : {"plain.rawlog", "gz.rawlog"})
+		{
+			const std::string e = errorOf(dir.file(file));
+			EXPECT_NE(e.find(file), std::string::npos) << e;
+			EXPECT_NE(e.find(entry), std::string::npos) << e;
+			EXPECT_NE(e.find("claims 2147483647 elements"), std::string::npos) << e;
+		}
+	}
+}
+
+TEST(CCheckedGzInputStream, PeekedBytesAreReadAgain)
+{
+	TempDir dir;
+	writeBytes(dir.file("p.bin"), "abcdef");
+	CCheckedGzInputStream in(dir.file("p.bin"));
+	EXPECT_EQ(in.peek(3), "abc");
+	EXPECT_EQ(in.peek(10), "abcdef");
+	EXPECT_EQ(in.remainingBytesBound(), 6u);
+	char buf[4] = {};
+	ASSERT_EQ(in.Read(buf, 2), 2u);
+	EXPECT_EQ(std::string(buf, 2), "ab");
+	EXPECT_EQ(in.getPosition(), 2u);
+	EXPECT_EQ(in.remainingBytesBound(), 4u);
+	EXPECT_EQ(in.peek(1), "c");
+	ASSERT_EQ(in.Read(buf, 4), 4u);
+	EXPECT_EQ(std::string(buf, 4), "cdef");
+	EXPECT_EQ(in.Read(buf, 4), 0u);
+	EXPECT_EQ(in.peek(4), "");
+}
+
 TEST(CRawlogReader, UnknownClassesAreNamed)
 {
 	TempDir dir;

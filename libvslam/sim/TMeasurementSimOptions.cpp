@@ -162,12 +162,7 @@ void TMeasurementSimOptions::saveToConfigFile(
 vslam::TMeasurementSimOptions vslam::loadMeasurementSimOptions(
 	const std::string& iniText, const std::vector<config::Override>& overrides)
 {
-	mrpt::config::CConfigFileMemory cfg(iniText);
-	config::applyOverrides(cfg, overrides);
-	// Re-parse so that keys written by the overrides are seen like file keys.
-	std::string content;
-	cfg.getContent(content);
-	cfg.setContent(content);
+	const mrpt::config::CConfigFileMemory cfg = config::parseIniWithOverrides(iniText, overrides);
 	TMeasurementSimOptions options;
 	config::KnownKeys known;
 	known.addFromOptions(options, TMeasurementSimOptions::kSection);

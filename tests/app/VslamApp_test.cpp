@@ -327,6 +327,27 @@ TEST(VslamApp, MisspelledKeyIsAnErrorWithTheClosestKnownKey)
 		0);
 }
 
+// Found by fuzz_config: MRPT's INI parser throws a plain runtime error for a
+// broken directive; both apps report it as a configuration error naming the file.
+TEST(VslamApp, BrokenIniSyntaxIsAConfigurationErrorNamingTheFile)
+{
+	TempDir dir;
+	std::ofstream(dir.file("broken.ini")) << "[vslam]\nrawlog_file = " << kDemoRawlog
+										  << "\nmax_steps = $eval{s =\n";
+	const auto r = runCommand(q(kVslam) + " " + q(dir.file("broken.ini")) + " --quiet --out " +
+		q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_TRUE(contains(r.output, "broken.ini")) << r.output;
+	EXPECT_TRUE(contains(r.output, "INI syntax: Line 3")) << r.output;
+	EXPECT_FALSE(fs::exists(dir.file("o")));
+	const std::string sim = std::string(VSLAM_BINARY_DIR) + "/bin/vslam-simul-measurements";
+	const auto s = runCommand(q(sim) + " " + q(dir.file("broken.ini")) + " " + q(dir.file("s.rawlog")));
+	EXPECT_EQ(s.exitCode, 2) << s.output;
+	EXPECT_TRUE(contains(s.output, "broken.ini")) << s.output;
+	EXPECT_TRUE(contains(s.output, "INI syntax: Line 3")) << s.output;
+	EXPECT_FALSE(fs::exists(dir.file("s.rawlog")));
+}
+
 TEST(VslamApp, UsageAndMissingConfigurationErrors)
 {
 	EXPECT_EQ(runCommand(q(kVslam)).exitCode, 1);
