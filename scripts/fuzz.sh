@@ -7,8 +7,9 @@
 #
 # Defaults: 60 s; "fuzz_rawlog fuzz_config fuzz_mrclam fuzz_landmark_map".
 # Needs clang and libclang-rt-14-dev (installed here if missing) and a normal
-# build for the seed rawlogs (scripts/setup.sh build). Crashes are saved as
-# build-fuzz/findings/<target>/crash-*; turn each into a regression test.
+# build for the seed rawlogs (scripts/setup.sh build). Findings are saved as
+# build-fuzz/findings/<target>/{crash,timeout,oom}-*; reproduce one with
+# build-fuzz/bin/<target> FILE, and turn each into a regression test.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_PER_TARGET="${1:-60}"
@@ -57,20 +58,25 @@ if [[ -d "$MRCLAM" ]]; then
 fi
 cp "$ROOT"/tests/fuzz/seeds/mrclam/* "$SEEDS/fuzz_mrclam/"
 
-echo "| target | seconds | executions | executions/s | corpus | findings |"
+# Fork mode: a finding is saved and counted, and fuzzing goes on for the
+# whole time (a run that stopped at the first finding would say nothing of
+# the rest). Findings: crash-* / timeout-* / oom-* files per target.
+echo "| target | seconds | executions | executions/s | corpus | crashes / timeouts / ooms |"
 echo "|---|---|---|---|---|---|"
 for t in $TARGETS; do
   corpus="$BUILD/corpus/$t" findings="$BUILD/findings/$t"
   mkdir -p "$corpus" "$findings"
   log="$BUILD/$t.log"
   set +e
-  (cd "$findings" && ASAN_OPTIONS=detect_leaks=1 "$BUILD/bin/$t" -max_total_time="$SECONDS_PER_TARGET" \
-    -timeout=10 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 "$corpus" "$SEEDS/$t") > "$log" 2>&1
-  rc=$?
+  (cd "$findings" && ASAN_OPTIONS=detect_leaks=1 "$BUILD/bin/$t" -fork=1 -ignore_crashes=1 \
+    -ignore_timeouts=1 -ignore_ooms=1 -max_total_time="$SECONDS_PER_TARGET" -timeout=10 \
+    -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$findings/" "$corpus" "$SEEDS/$t") > "$log" 2>&1
   set -e
-  execs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)"
-  units="$(ls "$corpus" | wc -l)"
-  found="$(ls "$findings" | wc -l)"
-  printf "| %s | %s | %s | %s | %s | %s%s |\n" "$t" "$SECONDS_PER_TARGET" "$execs" \
-    "$((execs / SECONDS_PER_TARGET))" "$units" "$found" "$([[ $rc -ne 0 ]] && echo " (exit $rc, see $log)")"
+  # The last status line: "#<execs>: cov: .. corp: <n> .. oom/timeout/crash: a/b/c ..".
+  status="$(grep -E '^#[0-9]+: ' "$log" | tail -n 1)"
+  execs="$(sed -E 's/^#([0-9]+):.*/\1/' <<< "$status")"
+  triple="$(grep -oE 'oom/timeout/crash: [0-9]+/[0-9]+/[0-9]+' <<< "$status" | grep -oE '[0-9/]+$')"
+  IFS=/ read -r ooms timeouts crashes <<< "${triple:-0/0/0}"
+  printf "| %s | %s | %s | %s | %s | %s / %s / %s |\n" "$t" "$SECONDS_PER_TARGET" "${execs:-0}" \
+    "$((${execs:-0} / SECONDS_PER_TARGET))" "$(ls "$corpus" | wc -l)" "$crashes" "$timeouts" "$ooms"
 done

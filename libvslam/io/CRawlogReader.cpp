@@ -98,13 +98,15 @@ void CRawlogReader::checkElementCount(size_t entry)
 	uint32_t count = 0;
 	for (int i = 3; i >= 0; i--)  // little endian
 		count = (count << 8) | static_cast<unsigned char>(head[1 + nameLength + 1 + i]);
-	// Every element takes at least one byte, so a count beyond the bytes
-	// left is corrupt data: reject it before MRPT allocates that many.
+	// Every element is a serialized object of at least 4 bytes (header,
+	// name, version, end mark), and no real frame holds a million of them:
+	// anything beyond is corrupt data, rejected before MRPT allocates it.
+	constexpr uint32_t kMaxElements = 1'000'000;
 	const uint64_t left = m_stream->remainingBytesBound();
-	if (count > left)
-		fail(entry, name + " claims " + std::to_string(count) +
-			" elements, more than the file has bytes left (" + std::to_string(left) +
-			"): the file is corrupt");
+	if (count > kMaxElements || uint64_t(count) * 4 > left)
+		fail(entry, name + " claims " + std::to_string(count) + " elements (at most " +
+			std::to_string(std::min<uint64_t>(kMaxElements, left / 4)) +
+			" are possible here): the file is corrupt");
 }
 
 void CRawlogReader::checkOdometry(const mrpt::obs::CActionCollection& a, size_t entry) const

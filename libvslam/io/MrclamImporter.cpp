@@ -61,6 +61,15 @@ std::string robotFile(const std::string& dir, int robot, const char* kind)
 		.string();
 }
 
+/** An integer column (barcode, subject number): integral and of a sane size. */
+int integerField(double v, const std::string& file, size_t row)
+{
+	if (v != std::floor(v) || std::abs(v) > 1e9)
+		throw InputError("'" + file + "': data row " + std::to_string(row + 1) +
+			": expected an integer ID, got " + std::to_string(v));
+	return static_cast<int>(v);
+}
+
 void checkSorted(const std::vector<std::vector<double>>& rows, const std::string& file)
 {
 	for (size_t i = 1; i < rows.size(); i++)
@@ -82,8 +91,10 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 	const std::string gtFile = robotFile(dir, o.robot, "Groundtruth");
 
 	std::map<int, int> subjectOfBarcode;
-	for (const auto& r : readNumericTable(barcodesFile, "#", 2))
-		subjectOfBarcode[static_cast<int>(r[1])] = static_cast<int>(r[0]);
+	const auto barcodeRows = readNumericTable(barcodesFile, "#", 2);
+	for (size_t i = 0; i < barcodeRows.size(); i++)
+		subjectOfBarcode[integerField(barcodeRows[i][1], barcodesFile, i)] =
+			integerField(barcodeRows[i][0], barcodesFile, i);
 	auto odoRows = readNumericTable(odoFile, "#", 3);
 	for (auto& r : odoRows) r[0] += o.odometry_delay;
 	const auto measRows = readNumericTable(measFile, "#", 4);
@@ -101,9 +112,10 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 	const double tOdo = odometry.startTime(), tEnd = odometry.endTime();
 	// Step times: every image inside the odometry span, plus gap fillers.
 	std::map<double, std::vector<mrpt::obs::CObservationBearingRange::TMeasurement>> images;
-	for (const auto& r : measRows)
+	for (size_t i = 0; i < measRows.size(); i++)
 	{
-		const auto it = subjectOfBarcode.find(static_cast<int>(r[1]));
+		const auto& r = measRows[i];
+		const auto it = subjectOfBarcode.find(integerField(r[1], measFile, i));
 		if (it == subjectOfBarcode.end())
 		{
 			out.droppedFalseBarcodes++;
@@ -139,11 +151,21 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 	out.startPoseWorld = *start;
 	for (const auto& p : gtWorld)
 		out.groundTruth.push_back({p.t, se2::between(out.startPoseWorld, p.pose)});
-	for (const auto& r : readNumericTable(landmarksFile, "#", 5))
+	const auto landmarkRows = readNumericTable(landmarksFile, "#", 5);
+	for (size_t i = 0; i < landmarkRows.size(); i++)
 	{
+		const auto& r = landmarkRows[i];
 		const se2::Pose l = se2::between(out.startPoseWorld, {r[1], r[2], 0});
-		out.landmarks.push_back({static_cast<int>(r[0]), l.x, l.y});
+		out.landmarks.push_back({integerField(r[0], landmarksFile, i), l.x, l.y});
 	}
+
+	// Steps at least every max_step_gap: refuse absurd spans (corrupt times)
+	// instead of generating billions of steps.
+	constexpr double kMaxSteps = 1e7;
+	if ((tEnd - t0) / o.max_step_gap > kMaxSteps)
+		throw InputError("'" + odoFile + "': odometry spans " + std::to_string(tEnd - t0) +
+			" s, more than " + std::to_string(static_cast<long>(kMaxSteps)) +
+			" steps of max_step_gap; are its times corrupt?");
 
 	std::vector<double> times{t0};
 	double last = t0;

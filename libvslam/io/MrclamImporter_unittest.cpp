@@ -113,6 +113,51 @@ TEST(MrclamImporter, BadInputNamesTheFile)
 	EXPECT_THROW(importMrclam(dir.path().string(), o), InputError);
 }
 
+namespace
+{
+std::string importError(const std::string& dir)
+{
+	try
+	{
+		importMrclam(dir, {});
+	}
+	catch (const InputError& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+}  // namespace
+
+// Found by fuzz_mrclam: a barcode of 2.2e38 was cast to int (undefined
+// behaviour); a corrupt time far in the future would have asked for
+// billions of gap-filling steps.
+TEST(MrclamImporter, NonIntegerIdsAndAbsurdTimeSpansNameTheFile)
+{
+	for (const std::string& row : {"106.0 2.2e38 1.0 0.1\n", "106.0 63.5 1.0 0.1\n"})
+	{
+		TempDir dir;
+		writeDataset(dir.path().string());
+		std::ofstream(dir.file("Robot1_Measurement.dat"), std::ios::app) << row;
+		const std::string e = importError(dir.path().string());
+		EXPECT_NE(e.find("Robot1_Measurement.dat': data row 5: expected an integer ID"), std::string::npos) << e;
+	}
+	{
+		TempDir dir;
+		writeDataset(dir.path().string());
+		std::ofstream(dir.file("Barcodes.dat"), std::ios::app) << "8 1e300\n";
+		const std::string e = importError(dir.path().string());
+		EXPECT_NE(e.find("Barcodes.dat': data row 5"), std::string::npos) << e;
+	}
+	{
+		TempDir dir;
+		writeDataset(dir.path().string());
+		std::ofstream(dir.file("Robot1_Odometry.dat"), std::ios::app) << "1e15 0.1 0.0\n";
+		const std::string e = importError(dir.path().string());
+		EXPECT_NE(e.find("Robot1_Odometry.dat': odometry spans"), std::string::npos) << e;
+	}
+}
+
 TEST(MrclamImporter, RealDataset6Robot1)
 {
 	const std::filesystem::path dir = vslam::testing::mrclamDataset(6);
