@@ -1,4 +1,5 @@
 #include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/ReadSensorLabel.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <iomanip>
@@ -29,7 +30,8 @@ void CObservationLandmarkCreated::serializeFrom(
 		case 0:
 		{
 			double x = 0, y = 0, phi = 0;
-			in >> timestamp >> sensorLabel;
+			in >> timestamp;
+			readSensorLabel(in, sensorLabel);
 			in >> landmarkID >> x >> y >> phi;
 			landmarkPoseInRobot = mrpt::poses::CPose2D(x, y, phi);
 			for (int r = 0; r < 3; r++)

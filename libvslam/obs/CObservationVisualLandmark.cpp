@@ -1,4 +1,5 @@
 #include <libvslam/obs/CObservationVisualLandmark.h>
+#include <libvslam/obs/ReadSensorLabel.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <iomanip>
@@ -27,7 +28,8 @@ void CObservationVisualLandmark::serializeFrom(
 		case 0:
 		{
 			double x = 0, y = 0, phi = 0;
-			in >> timestamp >> sensorLabel;
+			in >> timestamp;
+			readSensorLabel(in, sensorLabel);
 			in >> landmarkID >> x >> y >> phi;
 			relPose = mrpt::poses::CPose2D(x, y, phi);
 			in >> ProjErrRMS >> NPoints >> Slope >> sensorPoseOnRobot;

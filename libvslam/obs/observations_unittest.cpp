@@ -4,6 +4,7 @@
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
+#include <cstring>
 
 using namespace vslam;
 
@@ -107,4 +108,40 @@ TEST(Observations, EachKindHasItsOwnDefaultSensorLabel)
 	// first object's header: the two kinds must not share a label.
 	EXPECT_EQ(CObservationVisualLandmark().sensorLabel, "CAMERA");
 	EXPECT_NE(CObservationLandmarkCreated().sensorLabel, CObservationVisualLandmark().sensorLabel);
+}
+
+// A corrupt label length must not become a 4 GiB allocation (MRPT's own
+// string reader would try): both classes refuse it with an exception.
+TEST(Observations, CorruptSensorLabelLengthThrowsInsteadOfAllocating)
+{
+	CObservationVisualLandmark visual;
+	CObservationLandmarkCreated created;
+	for (const mrpt::serialization::CSerializable* o :
+		 std::initializer_list<const mrpt::serialization::CSerializable*>{&visual, &created})
+	{
+		mrpt::io::CMemoryStream buf;
+		auto arch = mrpt::serialization::archiveFrom(buf);
+		arch << *o;
+		auto* data = static_cast<uint8_t*>(buf.getRawBufferData());
+		// Layout: 0x80 | name length, name, version, timestamp (8 bytes),
+		// then the label's uint32 length.
+		const size_t lengthPos = 1 + (data[0] & 0x7F) + 1 + 8;
+		ASSERT_LT(lengthPos + 4, buf.getTotalBytesCount());
+		uint32_t length = 0;
+		std::memcpy(&length, data + lengthPos, 4);
+		EXPECT_EQ(length, std::string(o == &visual ? visual.sensorLabel : created.sensorLabel).size());
+		const uint32_t corrupt = 0xF0000000u;
+		std::memcpy(data + lengthPos, &corrupt, 4);
+		buf.Seek(0);
+		try
+		{
+			arch.ReadObject();
+			ADD_FAILURE() << "no exception";
+		}
+		catch (const std::exception& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("sensor label of 4026531840 bytes"), std::string::npos)
+				<< e.what();
+		}
+	}
 }
