@@ -3,13 +3,16 @@
 # (idempotent), builds, then runs the main job or the tests.
 #
 #   scripts/setup.sh demo     install, build, run vslam on the shipped demo rawlog
-#   scripts/setup.sh test     install, build, run every test (ctest)
+#   scripts/setup.sh test     install, build, run every test (ctest), then
+#                             build again with ASan + UBSan and run every
+#                             test under the sanitizers (any report fails)
 #   scripts/setup.sh build    install and build only
 #
 # Run as root, or as a user with sudo. Environment:
 #   VSLAM_BUILD_DIR   build folder (default: build)
 #   VSLAM_JOBS        parallel build jobs (default: number of cores)
 #   VSLAM_SKIP_APT=1  do not touch packages (e.g. no network)
+#   VSLAM_SKIP_SANITIZED=1  test: skip the sanitized build and run
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -18,7 +21,7 @@ JOBS="${VSLAM_JOBS:-$(nproc)}"
 MODE="${1:-}"
 
 usage() {
-  sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | grep '^#' | sed 's/^# \{0,1\}//'
   exit 1
 }
 case "$MODE" in demo | test | build) ;; *) usage ;; esac
@@ -75,5 +78,18 @@ case "$MODE" in
   test)
     echo "[setup] running all tests"
     ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS"
+    if [[ "${VSLAM_SKIP_SANITIZED:-0}" == 1 ]]; then
+      echo "[setup] VSLAM_SKIP_SANITIZED=1: not running the tests under ASan + UBSan"
+      exit 0
+    fi
+    # -O1 without debug info: a few minutes to build on two cores (with
+    # -g it takes far longer) and reports still name the functions.
+    SANITIZED="$BUILD-sanitized"
+    echo "[setup] building with AddressSanitizer + UndefinedBehaviorSanitizer in $SANITIZED"
+    cmake -S "$ROOT" -B "$SANITIZED" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
+      -DVSLAM_SANITIZE=ON -DVSLAM_BUILD_BENCHMARKS=OFF
+    cmake --build "$SANITIZED" -j "$JOBS"
+    echo "[setup] running all tests under ASan + UBSan"
+    ctest --test-dir "$SANITIZED" --output-on-failure -j "$JOBS"
     ;;
 esac
