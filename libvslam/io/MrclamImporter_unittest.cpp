@@ -134,7 +134,7 @@ std::string importError(const std::string& dir)
 // billions of gap-filling steps.
 TEST(MrclamImporter, NonIntegerIdsAndAbsurdTimeSpansNameTheFile)
 {
-	for (const std::string& row : {"106.0 2.2e38 1.0 0.1\n", "106.0 63.5 1.0 0.1\n"})
+	for (const char* row : {"106.0 2.2e38 1.0 0.1\n", "106.0 63.5 1.0 0.1\n"})
 	{
 		TempDir dir;
 		writeDataset(dir.path().string());

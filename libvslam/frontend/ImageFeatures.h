@@ -1,0 +1,41 @@
+#pragma once
+/** \file ImageFeatures.h
+ * SIFT features of one image: undistorted pixel positions and descriptors
+ * (one CV_32F row of 128 each). */
+#include <libvslam/frontend/PinholeCamera.h>
+#include <mrpt/img/CImage.h>
+#include <opencv2/core.hpp>
+#include <opencv2/features2d.hpp>
+
+#include <vector>
+
+namespace vslam
+{
+struct TVisualFrontEndOptions;
+
+struct ImageFeatures
+{
+	PinholeCamera camera;
+	std::vector<cv::Point2f> pixels;  //!< undistorted
+	std::vector<float> scales;  //!< keypoint size (for stats and point selection)
+	cv::Mat descriptors;  //!< N x 128, CV_32F
+
+	size_t size() const { return pixels.size(); }
+};
+
+/** Detects SIFT features in an image of any size, colour or grey. */
+class FeatureExtractor
+{
+   public:
+	explicit FeatureExtractor(const TVisualFrontEndOptions& options);
+	/** Features of `image`; `calibration` undistorts them. */
+	ImageFeatures extract(const cv::Mat& image, const ImageCalibration& calibration) const;
+
+   private:
+	cv::Ptr<cv::SIFT> m_sift;
+};
+
+/** Ratio-test matches from `a` to `b` (index pairs), each `b` used once. */
+std::vector<std::pair<int, int>> matchDescriptors(
+	const cv::Mat& a, const cv::Mat& b, double ratio);
+}  // namespace vslam

@@ -1,0 +1,253 @@
+#include <libvslam/frontend/BundleAdjustment.h>
+#include <libvslam/frontend/LandmarkCreator.h>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core/eigen.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+using namespace vslam;
+
+namespace
+{
+/** X_v = R X_last + t: the pose of view v relative to the newest camera. */
+ba::CameraPose relativePose(const mrpt::poses::CPose3D& cameraV, const mrpt::poses::CPose3D& cameraLast)
+{
+	const mrpt::poses::CPose3D rel = cameraLast - cameraV;  // cameraV^-1 (+) cameraLast: last -> v
+	ba::CameraPose p;
+	p.R = rel.getRotationMatrix().asEigen();
+	p.t = Eigen::Vector3d(rel.x(), rel.y(), rel.z());
+	return p;
+}
+
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+	return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+}
+
+double rotationAngle(const Eigen::Matrix3d& R)
+{
+	return std::acos(std::clamp((R.trace() - 1) / 2, -1.0, 1.0));
+}
+
+/** The essential matrix between the newest and the oldest view: a better
+ * relative rotation than odometry's, and the baseline direction; used
+ * only when it agrees with odometry (a wrong solution is worse than none). */
+bool poseFromImages(
+	const PinholeCamera& cam, const std::vector<cv::Point2f>& last, const std::vector<cv::Point2f>& oldest,
+	const ba::CameraPose& odometry, ba::CameraPose& out, std::vector<bool>& inlier)
+{
+	const double baseline = odometry.t.norm();
+	if (baseline <= 0 || last.size() < 8) return false;
+	cv::Mat inliers;
+	const cv::Mat K(cam.K());
+	const cv::Mat E = cv::findEssentialMat(last, oldest, K, cv::RANSAC, 0.999, 1.0, inliers);
+	if (E.rows != 3 || E.cols != 3) return false;
+	cv::Mat R, t;
+	const int good = cv::recoverPose(E, last, oldest, K, R, t, inliers);
+	if (good < 8) return false;
+	ba::CameraPose p;
+	cv::cv2eigen(R, p.R);
+	Eigen::Vector3d dir;
+	cv::cv2eigen(t, dir);
+	p.t = dir.normalized() * baseline;
+	constexpr double kMaxDirectionError = 30 * M_PI / 180, kMaxRotationError = 10 * M_PI / 180;
+	if (angleBetween(p.t, odometry.t) > kMaxDirectionError) return false;
+	if (rotationAngle(p.R * odometry.R.transpose()) > kMaxRotationError) return false;
+	out = p;
+	inlier.assign(last.size(), false);
+	for (int i = 0; i < inliers.rows; i++) inlier[i] = inliers.at<uchar>(i) != 0;
+	return true;
+}
+}  // namespace
+
+CreationResult vslam::createLandmark(
+	const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount,
+	const TVisualFrontEndOptions& o)
+{
+	CreationResult result;
+	const int n = static_cast<int>(views.size());
+	if (n < 2)
+	{
+		result.why = "fewer than two views";
+		return result;
+	}
+	const CreationView& last = *views.back();
+	const PinholeCamera& cam = last.features.camera;
+
+	// Tracks: features of the newest view matched in every other view.
+	std::vector<std::map<int, int>> matchOf(n - 1);
+	for (int v = 0; v + 1 < n; v++)
+		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors, o.match_ratio))
+			matchOf[v][a] = b;
+	std::vector<std::vector<int>> tracks;  // [feature in last, in view 0, ..., in view n-2]
+	for (const auto& [a, b0] : matchOf[0])
+	{
+		std::vector<int> t{a, b0};
+		for (int v = 1; v + 1 < n; v++)
+		{
+			const auto it = matchOf[v].find(a);
+			if (it == matchOf[v].end()) break;
+			t.push_back(it->second);
+		}
+		if (static_cast<int>(t.size()) == n) tracks.push_back(std::move(t));
+	}
+	result.tracks = static_cast<int>(tracks.size());
+	if (result.tracks < o.creation_min_points)
+	{
+		result.why = "only " + std::to_string(result.tracks) + " features matched across the views";
+		return result;
+	}
+
+	// Poses relative to the newest camera: odometry first, then the
+	// essential matrix for the oldest view.
+	ba::Problem problem;
+	problem.camera = cam;
+	problem.poses.push_back({});
+	for (int v = 0; v + 1 < n; v++) problem.poses.push_back(relativePose(views[v]->cameraPose, last.cameraPose));
+	const double baseline = problem.poses[1].t.norm();
+	{
+		std::vector<cv::Point2f> pl, p0;
+		for (const auto& t : tracks)
+		{
+			pl.push_back(last.features.pixels[t[0]]);
+			p0.push_back(views[0]->features.pixels[t[1]]);
+		}
+		ba::CameraPose fromImages;
+		std::vector<bool> inlier;
+		if (poseFromImages(cam, pl, p0, problem.poses[1], fromImages, inlier))
+		{
+			// Tracks that break the epipolar geometry are mismatches.
+			std::vector<std::vector<int>> kept;
+			for (size_t k = 0; k < tracks.size(); k++)
+				if (inlier[k]) kept.push_back(std::move(tracks[k]));
+			tracks = std::move(kept);
+			// Keep the middle views consistent: apply the same correction.
+			const Eigen::Matrix3d dR = fromImages.R * problem.poses[1].R.transpose();
+			for (int v = 2; v < n; v++) problem.poses[v].R = dR * problem.poses[v].R;
+			problem.poses[1] = fromImages;
+			result.rotationFromImages = true;
+		}
+	}
+
+	// Triangulate and refine; drop gross outliers once and refine again.
+	const auto pixelOf = [&](int view, const std::vector<int>& t) {
+		// view 0 of the problem is the newest image (track index 0)
+		const auto& px = view == 0 ? last.features.pixels[t[0]] : views[view - 1]->features.pixels[t[view]];
+		return Eigen::Vector2d(px.x, px.y);
+	};
+	std::vector<int> trackOfPoint;
+	for (size_t k = 0; k < tracks.size(); k++)
+	{
+		std::vector<Eigen::Vector2d> px;
+		for (int v = 0; v < n; v++) px.push_back(pixelOf(v, tracks[k]));
+		Eigen::Vector3d X;
+		if (!ba::triangulate(cam, problem.poses, px, X)) continue;
+		bool inFront = true;
+		for (const auto& p : problem.poses) inFront = inFront && p.map(X).z() > 0;
+		if (!inFront) continue;
+		const int i = static_cast<int>(problem.points.size());
+		problem.points.push_back(X);
+		trackOfPoint.push_back(static_cast<int>(k));
+		for (int v = 0; v < n; v++) problem.observations.push_back({v, i, px[v]});
+	}
+	const auto maxErrorOfPoint = [&](const ba::Problem& p) {
+		std::vector<double> e(p.points.size(), 0);
+		for (const auto& ob : p.observations)
+		{
+			const double r = p.poses[ob.camera].map(p.points[ob.point]).z() > 0
+				? ba::residual(p, ob).norm()
+				: std::numeric_limits<double>::infinity();
+			e[ob.point] = std::max(e[ob.point], r);
+		}
+		return e;
+	};
+	ba::refine(problem);
+	{
+		// Second round without the points far off after the first.
+		const auto err = maxErrorOfPoint(problem);
+		ba::Problem kept;
+		kept.camera = problem.camera;
+		kept.poses = problem.poses;
+		std::vector<int> keptTracks;
+		std::vector<int> newIndex(problem.points.size(), -1);
+		for (size_t i = 0; i < problem.points.size(); i++)
+			if (err[i] <= 3 * o.creation_max_reprojection_px)
+			{
+				newIndex[i] = static_cast<int>(kept.points.size());
+				kept.points.push_back(problem.points[i]);
+				keptTracks.push_back(trackOfPoint[i]);
+			}
+		for (const auto& ob : problem.observations)
+			if (newIndex[ob.point] >= 0) kept.observations.push_back({ob.camera, newIndex[ob.point], ob.pixel});
+		problem = std::move(kept);
+		trackOfPoint = std::move(keptTracks);
+		ba::refine(problem);
+	}
+
+	// Scale from odometry: the oldest camera's distance.
+	const double estimated = problem.poses[1].centre().norm();
+	if (!(estimated > 1e-9) || !(baseline > 0))
+	{
+		result.why = "no baseline between the views";
+		return result;
+	}
+	const double s = baseline / estimated;
+	for (auto& p : problem.poses) p.t *= s;
+	for (auto& X : problem.points) X *= s;
+
+	// Keep well-conditioned points only.
+	const auto err = maxErrorOfPoint(problem);
+	std::vector<Eigen::Vector3d> centres;
+	for (const auto& p : problem.poses) centres.push_back(p.centre());
+	const double minParallax = o.creation_min_parallax_deg * M_PI / 180;
+	std::vector<int> good;
+	for (size_t i = 0; i < problem.points.size(); i++)
+	{
+		const Eigen::Vector3d& X = problem.points[i];
+		if (!(err[i] <= o.creation_max_reprojection_px) || X.norm() > o.creation_max_depth) continue;
+		double parallax = 0;
+		for (size_t a = 0; a < centres.size(); a++)
+			for (size_t b = a + 1; b < centres.size(); b++)
+				parallax = std::max(parallax, angleBetween(X - centres[a], X - centres[b]));
+		if (parallax >= minParallax) good.push_back(static_cast<int>(i));
+	}
+	std::stable_sort(good.begin(), good.end(), [&](int a, int b) { return err[a] < err[b]; });
+	if (static_cast<int>(good.size()) > o.creation_max_points) good.resize(o.creation_max_points);
+	result.inliers = static_cast<int>(good.size());
+	if (result.inliers < o.creation_min_points)
+	{
+		result.why = "only " + std::to_string(result.inliers) + " well-conditioned 3-D points";
+		return result;
+	}
+
+	VisualLandmarkModel lm;
+	lm.views = n;
+	lm.createdAt = last.time;
+	lm.lastSeen = last.time;
+	lm.descriptors = cv::Mat(static_cast<int>(good.size()), last.features.descriptors.cols, CV_32F);
+	double sq = 0;
+	size_t count = 0;
+	for (size_t r = 0; r < good.size(); r++)
+	{
+		const int i = good[r];
+		const Eigen::Vector3d& X = problem.points[i];
+		double xr = 0, yr = 0, zr = 0;
+		mount.composePoint(X.x(), X.y(), X.z(), xr, yr, zr);
+		lm.points.emplace_back(static_cast<float>(xr), static_cast<float>(yr), static_cast<float>(zr));
+		last.features.descriptors.row(tracks[trackOfPoint[i]][0]).copyTo(lm.descriptors.row(static_cast<int>(r)));
+	}
+	for (const auto& ob : problem.observations)
+		if (std::find(good.begin(), good.end(), ob.point) != good.end())
+		{
+			sq += ba::residual(problem, ob).squaredNorm();
+			count++;
+		}
+	lm.reprojectionRms = count ? std::sqrt(sq / count) : 0;
+	result.landmark = std::move(lm);
+	for (int v = 1; v < n; v++) result.refinedPoses.emplace_back(problem.poses[v].R, problem.poses[v].t);
+	result.refinedPoses.emplace_back(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+	return result;
+}

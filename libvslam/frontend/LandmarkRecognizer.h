@@ -1,0 +1,39 @@
+#pragma once
+/** \file LandmarkRecognizer.h
+ * Recognition of one candidate landmark in an image: descriptor matches
+ * between the image and the landmark's points, a RANSAC PnP pose of the
+ * camera relative to those points, Levenberg-Marquardt refinement on the
+ * inliers, then through the camera mount the paper's measurement: the
+ * landmark frame's planar pose (dx, dy, dtheta) in the robot frame, with
+ * NPoints (inliers), ProjErrRMS (px) and Slope (robot tilt, rad).
+ */
+#include <libvslam/frontend/ImageFeatures.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/VisualLandmarkModel.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <optional>
+
+namespace vslam
+{
+struct LandmarkMeasurement
+{
+	int64_t landmarkID = 0;
+	mrpt::poses::CPose2D landmarkInRobot;  //!< (dx, dy, dtheta)
+	mrpt::poses::CPose3D robotInLandmark;  //!< the full 6-DOF solution
+	int NPoints = 0;  //!< PnP inliers
+	double ProjErrRMS = 0;  //!< px, over the inliers
+	double Slope = 0;  //!< tilt of the robot's z axis against the landmark's, rad
+	int matches = 0;  //!< descriptor matches before RANSAC
+};
+
+/** The measurement of `landmark` in `image`, if the pose solve finds at
+ * least recognition_min_inliers inliers. */
+std::optional<LandmarkMeasurement> recognizeLandmark(
+	const ImageFeatures& image, const VisualLandmarkModel& landmark,
+	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& options);
+
+/** Float descriptors of a landmark (compact ones converted back). */
+cv::Mat floatDescriptors(const cv::Mat& stored);
+}  // namespace vslam

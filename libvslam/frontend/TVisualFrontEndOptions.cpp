@@ -1,0 +1,83 @@
+#include <libvslam/config/ConfigError.h>
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
+
+using namespace vslam;
+using namespace vslam::config;
+
+void TVisualFrontEndOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	const auto readCount = [&](const char* key, int value, double lo, double hi) {
+		return static_cast<int>(readInt(c, s, key, value, Range::closed(lo, hi)));
+	};
+	sift_features = readCount("sift_features", sift_features, 0, 100000);
+	sift_contrast_threshold =
+		readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
+	sift_edge_threshold = readDouble(c, s, "sift_edge_threshold", sift_edge_threshold, Range::positive());
+	match_ratio = readDouble(c, s, "match_ratio", match_ratio, {0, 1, false, true});
+	creation_views = readCount("creation_views", creation_views, 3, 10);
+	creation_min_baseline =
+		readDouble(c, s, "creation_min_baseline", creation_min_baseline, Range::positive());
+	creation_max_baseline =
+		readDouble(c, s, "creation_max_baseline", creation_max_baseline, Range::positive());
+	creation_min_points = readCount("creation_min_points", creation_min_points, 6, 100000);
+	creation_max_points = readCount("creation_max_points", creation_max_points, 6, 100000);
+	creation_max_reprojection_px = readDouble(
+		c, s, "creation_max_reprojection_px", creation_max_reprojection_px, Range::positive());
+	creation_min_parallax_deg =
+		readDouble(c, s, "creation_min_parallax_deg", creation_min_parallax_deg, Range::closed(0, 90));
+	creation_max_depth = readDouble(c, s, "creation_max_depth", creation_max_depth, Range::positive());
+	recognition_min_votes = readCount("recognition_min_votes", recognition_min_votes, 1, 100000);
+	recognition_max_candidates =
+		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);
+	recognition_min_inliers = readCount("recognition_min_inliers", recognition_min_inliers, 6, 100000);
+	recognition_ransac_px =
+		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
+	recognition_ransac_iterations =
+		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
+	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
+	compact_descriptors = readBool(c, s, "compact_descriptors", compact_descriptors);
+	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
+	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
+	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
+	fy = readDouble(c, s, "fy", fy, Range::nonNegative());
+	cx = readDouble(c, s, "cx", cx, Range::nonNegative());
+	cy = readDouble(c, s, "cy", cy, Range::nonNegative());
+	if (creation_max_baseline < creation_min_baseline)
+		throw ConfigError("[" + s + "] creation_max_baseline must be >= creation_min_baseline");
+	if (creation_max_points < creation_min_points)
+		throw ConfigError("[" + s + "] creation_max_points must be >= creation_min_points");
+	if ((fx > 0) != (fy > 0))
+		throw ConfigError("[" + s + "] fx and fy must be given together");
+}
+
+void TVisualFrontEndOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "sift_features", sift_features, 30, 10, "Strongest SIFT features kept per image (0: all)");
+	c.write(s, "sift_contrast_threshold", sift_contrast_threshold, 30, 10, "SIFT contrast threshold");
+	c.write(s, "sift_edge_threshold", sift_edge_threshold, 30, 10, "SIFT edge threshold");
+	c.write(s, "match_ratio", match_ratio, 30, 10, "Ratio test: best / second-best distance below this");
+	c.write(s, "creation_views", creation_views, 30, 10, "Images a new landmark is built from (>= 3)");
+	c.write(s, "creation_min_baseline", creation_min_baseline, 30, 10, "Robot travel between creation views [m]");
+	c.write(s, "creation_max_baseline", creation_max_baseline, 30, 10, "Views older than this travel are dropped [m]");
+	c.write(s, "creation_min_points", creation_min_points, 30, 10, "Good 3-D points a landmark needs");
+	c.write(s, "creation_max_points", creation_max_points, 30, 10, "Points kept per landmark at most");
+	c.write(s, "creation_max_reprojection_px", creation_max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");
+	c.write(s, "creation_min_parallax_deg", creation_min_parallax_deg, 30, 10, "Widest angle between a point's rays at least [deg]");
+	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
+	c.write(s, "recognition_min_votes", recognition_min_votes, 30, 10, "Feature votes that make a landmark a candidate");
+	c.write(s, "recognition_max_candidates", recognition_max_candidates, 30, 10, "Candidates tried per image");
+	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
+	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
+	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC iterations");
+	c.write(s, "search_eps", search_eps, 30, 10, "Approximate descriptor search (nanoflann eps; 0: exact)");
+	c.write(s, "compact_descriptors", compact_descriptors, 30, 10, "Store descriptors as 8-bit integers");
+	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
+	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");
+	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");
+	c.write(s, "fy", fy, 30, 10, "Focal length override [px] (0: from each image)");
+	c.write(s, "cx", cx, 30, 10, "Principal point override [px] (with fx, fy)");
+	c.write(s, "cy", cy, 30, 10, "Principal point override [px] (with fx, fy)");
+}

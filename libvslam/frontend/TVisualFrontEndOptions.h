@@ -1,0 +1,64 @@
+#pragma once
+/** \file TVisualFrontEndOptions.h
+ * Options of the visual front-end (INI section [vslam_frontend]): SIFT
+ * features, landmark creation from a few views along the robot's motion,
+ * the landmark database and recognition by a robust pose solve.
+ */
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <cstdint>
+
+namespace vslam
+{
+struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
+{
+	static constexpr const char* kSection = "vslam_frontend";
+
+	// Features (OpenCV SIFT)
+	int sift_features = 600;  //!< strongest features kept per image (0: all)
+	double sift_contrast_threshold = 0.03;
+	double sift_edge_threshold = 10;
+	/** Lowe's ratio test between the best and second-best match. */
+	double match_ratio = 0.8;
+
+	// Landmark creation
+	int creation_views = 3;  //!< images a landmark is built from (>= 3)
+	/** Robot travel between consecutive creation views, m (the baseline
+	 * that gives the reconstruction its scale). */
+	double creation_min_baseline = 0.15;
+	/** A view older than this travel from the newest is dropped, m. */
+	double creation_max_baseline = 1.0;
+	int creation_min_points = 25;  //!< good 3-D points a landmark needs
+	int creation_max_points = 300;  //!< strongest points kept per landmark
+	double creation_max_reprojection_px = 2.0;  //!< per view, after refinement
+	double creation_min_parallax_deg = 1.0;  //!< widest angle between a point's rays
+	double creation_max_depth = 20;  //!< m from the landmark frame
+
+	// Database and recognition
+	/** A landmark is a candidate when this many image features vote for it. */
+	int recognition_min_votes = 10;
+	int recognition_max_candidates = 5;  //!< candidates tried per image
+	int recognition_min_inliers = 12;  //!< PnP inliers to accept a pose
+	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
+	int recognition_ransac_iterations = 300;
+	/** Approximate search: nanoflann's eps (0: exact). */
+	double search_eps = 0.5;
+	/** Descriptors stored as 8-bit integers (4x smaller) instead of floats. */
+	bool compact_descriptors = true;
+
+	// Map bounding
+	/** Most landmarks kept (0: no limit); beyond it the least useful go. */
+	int max_landmarks = 0;
+	/** A landmark expected in view (its frame within the camera's reach)
+	 * but not recognized this many times in a row is removed (0: never). */
+	int prune_after_misses = 0;
+
+	// Calibration overrides for data sets without it (0: from the images)
+	double fx = 0, fy = 0, cx = 0, cy = 0;
+
+	void loadFromConfigFile(
+		const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+	void saveToConfigFile(
+		mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+};
+}  // namespace vslam

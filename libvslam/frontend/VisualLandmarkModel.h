@@ -1,0 +1,34 @@
+#pragma once
+/** \file VisualLandmarkModel.h
+ * What the front-end keeps of a landmark: its ID, its 3-D points in the
+ * landmark frame (the robot pose at creation: x forward, y left, z up),
+ * their descriptors and bookkeeping. Not the images.
+ */
+#include <opencv2/core.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace vslam
+{
+struct VisualLandmarkModel
+{
+	int64_t id = 0;
+	std::vector<cv::Point3f> points;  //!< landmark frame, metres
+	/** One row per point: CV_32F (128 floats), or CV_8U when compact. */
+	cv::Mat descriptors;
+	double createdAt = 0;  //!< s
+	int views = 0;  //!< images it was built from
+	double reprojectionRms = 0;  //!< px, after refinement at creation
+	int recognitions = 0;
+	int missesInARow = 0;
+	double lastSeen = 0;  //!< s
+
+	/** Bytes this landmark takes in memory (points, descriptors, fields). */
+	size_t bytes() const
+	{
+		return sizeof(*this) + points.size() * sizeof(cv::Point3f) +
+			descriptors.total() * descriptors.elemSize();
+	}
+};
+}  // namespace vslam
