@@ -15,7 +15,7 @@ cv::Mat vslam::floatDescriptors(const cv::Mat& stored)
 	return f;
 }
 
-std::optional<LandmarkMeasurement> vslam::recognizeLandmark(
+std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& lm, const mrpt::poses::CPose3D& mount,
 	const TVisualFrontEndOptions& o)
 {
@@ -70,7 +70,7 @@ std::optional<LandmarkMeasurement> vslam::recognizeLandmark(
 	}
 	const mrpt::poses::CPose3D landmarkToCamera(T);
 	const mrpt::poses::CPose3D cameraInLandmark = mrpt::poses::CPose3D() - landmarkToCamera;
-	LandmarkMeasurement m;
+	VisualMeasurement m;
 	m.landmarkID = lm.id;
 	m.robotInLandmark = cameraInLandmark + (mrpt::poses::CPose3D() - mount);
 	const auto Rr = m.robotInLandmark.getRotationMatrix();

@@ -17,7 +17,7 @@
 
 namespace vslam
 {
-struct LandmarkMeasurement
+struct VisualMeasurement
 {
 	int64_t landmarkID = 0;
 	mrpt::poses::CPose2D landmarkInRobot;  //!< (dx, dy, dtheta)
@@ -30,7 +30,7 @@ struct LandmarkMeasurement
 
 /** The measurement of `landmark` in `image`, if the pose solve finds at
  * least recognition_min_inliers inliers. */
-std::optional<LandmarkMeasurement> recognizeLandmark(
+std::optional<VisualMeasurement> recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& landmark,
 	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& options);
 

@@ -20,13 +20,13 @@ ImageCalibration ImageCalibration::from(
 	};
 	if (!(std::isfinite(c.camera.fx) && std::isfinite(c.camera.fy) && c.camera.fx > 0 && c.camera.fy > 0))
 		throw bad("no focal length (set [vslam_frontend] fx, fy, cx, cy if the data has none)");
-	if (!(c.camera.cx >= 0 && c.camera.cx < width && c.camera.cy >= 0 && c.camera.cy < height))
-		throw bad("principal point (" + std::to_string(c.camera.cx) + ", " + std::to_string(c.camera.cy) +
-			") outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
 	if (!overridden && p.ncols > 0 && p.nrows > 0 &&
 		(static_cast<int>(p.ncols) != width || static_cast<int>(p.nrows) != height))
 		throw bad("calibrated for " + std::to_string(p.ncols) + "x" + std::to_string(p.nrows) +
 			" images, this one is " + std::to_string(width) + "x" + std::to_string(height));
+	if (!(c.camera.cx >= 0 && c.camera.cx < width && c.camera.cy >= 0 && c.camera.cy < height))
+		throw bad("principal point (" + std::to_string(c.camera.cx) + ", " + std::to_string(c.camera.cy) +
+			") outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
 	c.distortion = cv::Mat::zeros(1, 5, CV_64F);
 	if (!overridden)
 	{
