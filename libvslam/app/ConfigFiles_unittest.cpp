@@ -2,6 +2,8 @@
  * the example lists every key with its default, and every ready INI loads. */
 #include <gtest/gtest.h>
 #include <libvslam/app/CVSlamApp.h>
+#include <libvslam/config/IniText.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -84,7 +86,8 @@ TEST(ConfigFiles, EveryShippedVslamIniLoads)
 	for (const auto& e : fs::directory_iterator(kConfigDir))
 	{
 		const auto name = e.path().filename().string();
-		if (e.path().extension() != ".ini" || name.rfind("simul_", 0) == 0) continue;
+		if (e.path().extension() != ".ini" || name.rfind("simul_", 0) == 0 || name.rfind("frontend_", 0) == 0)
+			continue;
 		SCOPED_TRACE(name);
 		EXPECT_NO_THROW(effectiveOptions(e.path()));
 		checked++;
@@ -108,4 +111,28 @@ TEST(ConfigFiles, SimulatorIniFilesListKnownKeysOnly)
 		TMeasurementSimOptions o;
 		EXPECT_NO_THROW(o.loadFromConfigFile(ini, TMeasurementSimOptions::kSection));
 	}
+}
+
+TEST(ConfigFiles, FrontEndIniFilesListKnownKeysOnlyAndTheExampleShowsTheDefaults)
+{
+	const std::string section = TVisualFrontEndOptions::kSection;
+	config::KnownKeys known;
+	known.addFromOptions(TVisualFrontEndOptions(), section);
+	const auto example = readIni(kConfigDir / "frontend_example.ini");
+	for (const auto& key : known.keys(section)) EXPECT_TRUE(example.keyExists(section, key)) << key;
+	TVisualFrontEndOptions fromExample;
+	fromExample.loadFromConfigFile(example, section);
+	EXPECT_EQ(config::toIniText(fromExample, section), config::toIniText(TVisualFrontEndOptions(), section));
+	size_t checked = 0;
+	for (const auto& e : fs::directory_iterator(kConfigDir))
+	{
+		if (e.path().filename().string().rfind("frontend_", 0) != 0) continue;
+		SCOPED_TRACE(e.path().filename().string());
+		const auto ini = readIni(e.path());
+		EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known, section));
+		TVisualFrontEndOptions o;
+		EXPECT_NO_THROW(o.loadFromConfigFile(ini, section));
+		checked++;
+	}
+	EXPECT_GE(checked, 2u);
 }
