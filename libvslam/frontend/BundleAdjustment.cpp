@@ -30,6 +30,7 @@ double huberCost(double r, double k) { return r <= k ? 0.5 * r * r : k * (r - 0.
 double totalCost(const Problem& p, double k)
 {
 	double c = 0;
+	for (const auto& prior : p.priors) c += 0.5 * priorResidual(p, prior).squaredNorm();
 	for (const auto& o : p.observations)
 	{
 		const Eigen::Vector3d Xc = p.poses[o.camera].map(p.points[o.point]);
@@ -43,6 +44,25 @@ double totalCost(const Problem& p, double k)
 	return c;
 }
 }  // namespace
+
+Eigen::Matrix<double, 6, 1> priorResidual(const Problem& p, const PosePrior& prior)
+{
+	const CameraPose& pose = p.poses[prior.camera];
+	const Eigen::AngleAxisd e(pose.R * prior.pose.R.transpose());
+	Eigen::Matrix<double, 6, 1> r;
+	r.head<3>() = e.angle() * e.axis() / prior.sigmaRotation;
+	r.tail<3>() = (pose.t - prior.pose.t) / prior.sigmaTranslation;
+	return r;
+}
+
+Eigen::Matrix<double, 6, 6> priorJacobian(const Problem& p, const PosePrior& prior)
+{
+	Eigen::Matrix<double, 6, 6> J = Eigen::Matrix<double, 6, 6>::Zero();
+	J.topLeftCorner<3, 3>() = Eigen::Matrix3d::Identity() / prior.sigmaRotation;
+	J.bottomLeftCorner<3, 3>() = -skew(p.poses[prior.camera].t) / prior.sigmaTranslation;
+	J.bottomRightCorner<3, 3>() = Eigen::Matrix3d::Identity() / prior.sigmaTranslation;
+	return J;
+}
 
 Eigen::Vector2d residual(const Problem& p, const Observation& o)
 {
@@ -104,6 +124,14 @@ double refine(Problem& p, const Options& opt)
 			A.block<6, 6>(j, j) += w * Jc.transpose() * Jc;
 			gc.segment<6>(j) += w * Jc.transpose() * r;
 			B[k] = w * Jc.transpose() * Jp;
+		}
+		for (const auto& prior : p.priors)
+		{
+			if (prior.camera < 1) continue;
+			const int j = 6 * (prior.camera - 1);
+			const Eigen::Matrix<double, 6, 6> J = priorJacobian(p, prior);
+			A.block<6, 6>(j, j) += J.transpose() * J;
+			gc.segment<6>(j) += J.transpose() * priorResidual(p, prior);
 		}
 		for (;;)  // LM: raise lambda until the step lowers the cost
 		{

@@ -32,13 +32,28 @@ struct Observation
 	Eigen::Vector2d pixel;  //!< undistorted
 };
 
+/** A prior on one camera's pose (from odometry): residuals
+ * log(R R_prior^T) / sigmaRotation and (t - t_prior) / sigmaTranslation. */
+struct PosePrior
+{
+	int camera = 1;
+	CameraPose pose;
+	double sigmaRotation = 1, sigmaTranslation = 1;  //!< rad, m
+};
+
 struct Problem
 {
 	PinholeCamera camera;
 	std::vector<CameraPose> poses;  //!< poses[0] stays fixed
 	std::vector<Eigen::Vector3d> points;
 	std::vector<Observation> observations;
+	std::vector<PosePrior> priors;
 };
+
+/** The prior's 6 residuals and their Jacobian wrt [omega, dt] (small-angle
+ * approximation of the rotation part, exact at the prior). */
+Eigen::Matrix<double, 6, 1> priorResidual(const Problem& problem, const PosePrior& prior);
+Eigen::Matrix<double, 6, 6> priorJacobian(const Problem& problem, const PosePrior& prior);
 
 struct Options
 {

@@ -108,6 +108,16 @@ CreationResult vslam::createLandmark(
 	problem.poses.push_back({});
 	for (int v = 0; v + 1 < n; v++) problem.poses.push_back(relativePose(views[v]->cameraPose, last.cameraPose));
 	const double baseline = problem.poses[1].t.norm();
+	// Odometry as priors on every view's pose relative to the newest.
+	for (int v = 1; v < n; v++)
+	{
+		ba::PosePrior prior;
+		prior.camera = v;
+		prior.pose = problem.poses[v];
+		prior.sigmaRotation = o.creation_odometry_sigma_deg * M_PI / 180;
+		prior.sigmaTranslation = std::max(1e-3, o.creation_odometry_sigma_rel * problem.poses[v].centre().norm());
+		problem.priors.push_back(prior);
+	}
 	{
 		std::vector<cv::Point2f> pl, p0;
 		for (const auto& t : tracks)
@@ -171,6 +181,7 @@ CreationResult vslam::createLandmark(
 		ba::Problem kept;
 		kept.camera = problem.camera;
 		kept.poses = problem.poses;
+		kept.priors = problem.priors;
 		std::vector<int> keptTracks;
 		std::vector<int> newIndex(problem.points.size(), -1);
 		for (size_t i = 0; i < problem.points.size(); i++)

@@ -28,6 +28,10 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	creation_min_parallax_deg =
 		readDouble(c, s, "creation_min_parallax_deg", creation_min_parallax_deg, Range::closed(0, 90));
 	creation_max_depth = readDouble(c, s, "creation_max_depth", creation_max_depth, Range::positive());
+	creation_odometry_sigma_deg =
+		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range::positive());
+	creation_odometry_sigma_rel =
+		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range::positive());
 	recognition_min_votes = readCount("recognition_min_votes", recognition_min_votes, 1, 100000);
 	recognition_max_candidates =
 		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);
@@ -67,6 +71,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_max_reprojection_px", creation_max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");
 	c.write(s, "creation_min_parallax_deg", creation_min_parallax_deg, 30, 10, "Widest angle between a point's rays at least [deg]");
 	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
+	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
+	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
 	c.write(s, "recognition_min_votes", recognition_min_votes, 30, 10, "Feature votes that make a landmark a candidate");
 	c.write(s, "recognition_max_candidates", recognition_max_candidates, 30, 10, "Candidates tried per image");
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");

@@ -33,6 +33,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double creation_max_reprojection_px = 2.0;  //!< per view, after refinement
 	double creation_min_parallax_deg = 1.0;  //!< widest angle between a point's rays
 	double creation_max_depth = 20;  //!< m from the landmark frame
+	/** Odometry's uncertainty between creation views, as priors in the
+	 * bundle adjustment: heading (deg) and translation relative to the
+	 * distance travelled. They keep forward-motion reconstructions from
+	 * trading rotation for sideways translation (bas-relief ambiguity). */
+	double creation_odometry_sigma_deg = 1.0;
+	double creation_odometry_sigma_rel = 0.05;
 
 	// Database and recognition
 	/** A landmark is a candidate when this many image features vote for it. */

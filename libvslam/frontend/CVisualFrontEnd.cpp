@@ -1,0 +1,156 @@
+#include <libvslam/frontend/CVisualFrontEnd.h>
+#include <libvslam/frontend/LandmarkRecognizer.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+using namespace vslam;
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/** A landmark is expected in view when the robot is near where it was
+ * built and looks the same way (odometry only: the front-end has no map). */
+bool expectedInView(const mrpt::poses::CPose2D& createdAt, const mrpt::poses::CPose2D& now)
+{
+	constexpr double kNear = 0.5, kSameWay = 20 * M_PI / 180;
+	return (now - createdAt).norm() < kNear &&
+		std::abs(mrpt::math::wrapToPi(now.phi() - createdAt.phi())) < kSameWay;
+}
+}  // namespace
+
+CVisualFrontEnd::CVisualFrontEnd(const TVisualFrontEndOptions& options)
+	: m_options(options), m_extractor(options), m_database(options)
+{
+}
+
+CVisualFrontEnd::Output CVisualFrontEnd::process(
+	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, const std::string& what)
+{
+	Output out;
+	m_images++;
+	auto t = Clock::now();
+	const cv::Mat pixels = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	if (pixels.empty()) throw std::runtime_error(what + ": the image is empty or could not be loaded");
+	const auto calibration = ImageCalibration::from(obs.cameraParams, pixels.cols, pixels.rows, m_options, what);
+	CreationView view;
+	view.features = m_extractor.extract(pixels, calibration);
+	view.time = mrpt::Clock::toDouble(obs.timestamp);
+	view.cameraPose = mrpt::poses::CPose3D(odometryPose) + obs.cameraPose;
+	out.features = view.features.size();
+	out.seconds.features = since(t);
+
+	// Recognition: candidates from the database, then the pose solve.
+	t = Clock::now();
+	const auto candidates = m_database.candidates(view.features);
+	out.seconds.search = since(t);
+	t = Clock::now();
+	std::vector<int64_t> recognized;
+	for (const auto& c : candidates)
+	{
+		VisualLandmarkModel* lm = m_database.find(c.id);
+		const auto m = recognizeLandmark(view.features, *lm, obs.cameraPose, m_options);
+		if (!m) continue;
+		lm->recognitions++;
+		lm->missesInARow = 0;
+		lm->lastSeen = view.time;
+		recognized.push_back(c.id);
+		auto o = CObservationVisualLandmark::Create();
+		o->timestamp = obs.timestamp;
+		o->sensorLabel = obs.sensorLabel;
+		o->landmarkID = m->landmarkID;
+		o->relPose = m->landmarkInRobot;
+		o->ProjErrRMS = m->ProjErrRMS;
+		o->NPoints = static_cast<uint32_t>(m->NPoints);
+		o->Slope = m->Slope;
+		o->sensorPoseOnRobot = obs.cameraPose;
+		out.measurements.push_back(o);
+	}
+	out.seconds.pose = since(t);
+
+	// Creation: unrecognized views taken along the robot's motion.
+	t = Clock::now();
+	if (!recognized.empty())
+		m_views.clear();
+	else
+	{
+		const bool moved = m_views.empty() ||
+			(odometryPose - m_views.back().second).norm() >= m_options.creation_min_baseline;
+		if (moved) m_views.emplace_back(std::move(view), odometryPose);
+		while (!m_views.empty() &&
+			(odometryPose - m_views.front().second).norm() >
+				m_options.creation_max_baseline * (m_options.creation_views - 1))
+			m_views.pop_front();
+		if (static_cast<int>(m_views.size()) >= m_options.creation_views)
+		{
+			std::vector<const CreationView*> ptrs;
+			for (size_t i = m_views.size() - m_options.creation_views; i < m_views.size(); i++)
+				ptrs.push_back(&m_views[i].first);
+			auto result = createLandmark(ptrs, obs.cameraPose, m_options);
+			if (result.landmark)
+			{
+				result.landmark->id = m_nextId++;
+				auto c = CObservationLandmarkCreated::Create();
+				c->timestamp = obs.timestamp;
+				c->sensorLabel = obs.sensorLabel;
+				c->landmarkID = result.landmark->id;
+				// The landmark frame is the robot frame of this image.
+				c->landmarkPoseInRobot = mrpt::poses::CPose2D();
+				c->landmarkPoseInRobotCov = mrpt::math::CMatrixDouble33::Zero();
+				c->NPoints = static_cast<uint32_t>(result.landmark->points.size());
+				c->NViews = static_cast<uint32_t>(result.landmark->views);
+				c->sensorPoseOnRobot = obs.cameraPose;
+				out.created.push_back(c);
+				m_createdAt[result.landmark->id] = odometryPose;
+				m_database.insert(std::move(*result.landmark));
+				m_views.clear();
+			}
+			else
+				m_views.pop_front();  // try again with a newer set
+		}
+	}
+	out.seconds.creation = since(t);
+	prune(odometryPose, recognized, out);
+
+	m_total.features += out.seconds.features;
+	m_total.search += out.seconds.search;
+	m_total.pose += out.seconds.pose;
+	m_total.creation += out.seconds.creation;
+	return out;
+}
+
+void CVisualFrontEnd::prune(
+	const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out)
+{
+	std::vector<int64_t> remove;
+	if (m_options.prune_after_misses > 0)
+		for (const auto& [id, lm] : m_database.landmarks())
+		{
+			if (std::find(recognized.begin(), recognized.end(), id) != recognized.end()) continue;
+			if (!expectedInView(m_createdAt[id], odometryPose)) continue;
+			auto* l = m_database.find(id);
+			if (++l->missesInARow >= m_options.prune_after_misses) remove.push_back(id);
+		}
+	if (m_options.max_landmarks > 0 &&
+		static_cast<int>(m_database.size() - remove.size()) > m_options.max_landmarks)
+	{
+		// Over the cap: the least recognized go first, then the oldest.
+		std::vector<std::pair<std::pair<int, double>, int64_t>> rank;
+		for (const auto& [id, lm] : m_database.landmarks())
+			if (std::find(remove.begin(), remove.end(), id) == remove.end())
+				rank.push_back({{lm.recognitions, lm.lastSeen}, id});
+		std::sort(rank.begin(), rank.end());
+		const size_t excess = m_database.size() - remove.size() - static_cast<size_t>(m_options.max_landmarks);
+		for (size_t i = 0; i < excess; i++) remove.push_back(rank[i].second);
+	}
+	for (int64_t id : remove)
+	{
+		m_database.remove(id);
+		m_createdAt.erase(id);
+		out.pruned.push_back(id);
+	}
+}

@@ -1,0 +1,73 @@
+#pragma once
+/** \file CVisualFrontEnd.h
+ * The visual front-end: camera images in, the paper's observations out.
+ * For each image: SIFT features (with the image's own calibration), the
+ * landmark database proposes candidates, each is checked by a robust pose
+ * solve and becomes a CObservationVisualLandmark; when nothing is
+ * recognized the image joins the views for a new landmark, which is built
+ * once enough views with enough baseline (from odometry) are at hand and
+ * announced as a CObservationLandmarkCreated. The map is bounded by a cap
+ * and by pruning landmarks that are expected but repeatedly not seen.
+ */
+#include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/LandmarkCreator.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <mrpt/obs/CObservationImage.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace vslam
+{
+class CVisualFrontEnd
+{
+   public:
+	explicit CVisualFrontEnd(const TVisualFrontEndOptions& options);
+
+	struct StageSeconds
+	{
+		double features = 0, search = 0, pose = 0, creation = 0;
+		double total() const { return features + search + pose + creation; }
+	};
+	struct Output
+	{
+		std::vector<CObservationVisualLandmark::Ptr> measurements;
+		std::vector<CObservationLandmarkCreated::Ptr> created;
+		std::vector<int64_t> pruned;  //!< landmarks removed by map bounding
+		StageSeconds seconds;
+		size_t features = 0;
+	};
+
+	/** Processes one image taken at `odometryPose` (the robot's pose from
+	 * accumulated odometry). `what` names the image in errors. Throws
+	 * std::invalid_argument on an unusable calibration and std::runtime_error
+	 * if the image cannot be loaded. */
+	Output process(
+		const mrpt::obs::CObservationImage& image, const mrpt::poses::CPose2D& odometryPose,
+		const std::string& what);
+
+	const CLandmarkDatabase& database() const { return m_database; }
+	/** Totals over all images so far. */
+	const StageSeconds& totalSeconds() const { return m_total; }
+	size_t imagesProcessed() const { return m_images; }
+
+   private:
+	void prune(const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out);
+
+	TVisualFrontEndOptions m_options;
+	FeatureExtractor m_extractor;
+	CLandmarkDatabase m_database;
+	/** Recent unrecognized views for landmark creation, oldest first, with
+	 * the odometry pose each was taken at. */
+	std::deque<std::pair<CreationView, mrpt::poses::CPose2D>> m_views;
+	/** Odometry pose at each landmark's creation (for "expected in view"). */
+	std::map<int64_t, mrpt::poses::CPose2D> m_createdAt;
+	int64_t m_nextId = 1;
+	StageSeconds m_total;
+	size_t m_images = 0;
+};
+}  // namespace vslam
