@@ -8,11 +8,13 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/Trajectory.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
+#include <libvslam/frontend/ImagesToMeasurements.h>
 #include <libvslam/io/CPathFileWriter.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/LandmarkMapFile.h>
 #include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/obs/CObservationImage.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/datetime.h>
 #include <unistd.h>
@@ -48,6 +50,7 @@ std::string CVSlamApp::defaultConfigText()
 	mrpt::config::CConfigFileMemory c;
 	TVSlamAppOptions().saveToConfigFile(c, TVSlamAppOptions::kSection);
 	TVSlamFilterOptions().saveToConfig(c);
+	TVisualFrontEndOptions().saveToConfigFile(c, TVisualFrontEndOptions::kSection);
 	std::string text;
 	c.getContent(text);
 	return text;
@@ -58,6 +61,7 @@ config::KnownKeys CVSlamApp::knownKeys()
 	config::KnownKeys known;
 	known.addFromOptions(TVSlamAppOptions(), TVSlamAppOptions::kSection);
 	TVSlamFilterOptions().registerKnownKeys(known);
+	known.addFromOptions(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
 	return known;
 }
 
@@ -66,6 +70,16 @@ std::string CVSlamApp::resolveInput(const std::string& path) const
 	if (path.empty() || fs::path(path).is_absolute()) return path;
 	return (fs::path(m_configFile).parent_path() / path).lexically_normal().string();
 }
+
+namespace
+{
+bool hasImages(const mrpt::obs::CSensoryFrame& sf)
+{
+	for (const auto& o : sf)
+		if (std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(o)) return true;
+	return false;
+}
+}  // namespace
 
 void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::string>& overrides)
 {
@@ -80,6 +94,7 @@ void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::strin
 	config::checkNoUnknownKeys(params, knownKeys());
 	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);
 	filterOptions.loadFromConfig(params);
+	frontEndOptions.loadFromConfigFile(params, TVisualFrontEndOptions::kSection);
 }
 
 bool CVSlamApp::initialize(int argc, const char** argv)
@@ -248,6 +263,8 @@ int CVSlamApp::run()
 	InterruptFlag interrupt;
 	Trajectory estimated, odometry;
 	se2::Pose odo = filterOptions.pf.initialPose;
+	std::unique_ptr<CVisualFrontEnd> frontEnd;
+	RunSummary::FrontEnd frontEndSummary;
 	double firstT = 0, lastT = 0, stepSumMs = 0;
 	bool anyTimed = false;
 	const auto start = std::chrono::steady_clock::now();
@@ -264,6 +281,20 @@ int CVSlamApp::run()
 				break;
 			}
 			const auto t0 = std::chrono::steady_clock::now();
+			if (step.action)
+				if (const auto u = odometryIncrement(*step.action)) odo = se2::compose(odo, u->asTPose());
+			if (hasImages(*step.sf))
+			{
+				// Camera images: the front-end turns them into measurements.
+				if (!frontEnd) frontEnd = std::make_unique<CVisualFrontEnd>(frontEndOptions);
+				const auto r = replaceImagesWithMeasurements(*frontEnd, *step.sf,
+					mrpt::poses::CPose2D(odo.x, odo.y, odo.phi),
+					"rawlog '" + m_rawlogFile + "', entry " + std::to_string(step.entry));
+				frontEndSummary.images += r.images;
+				frontEndSummary.measurements += r.measurements;
+				frontEndSummary.created += r.created;
+				frontEndSummary.pruned += r.pruned;
+			}
 			try
 			{
 				pf.executeOn(filter, step.action.get(), step.sf.get());
@@ -286,8 +317,6 @@ int CVSlamApp::run()
 			anyTimed = anyTimed || timed;
 			lastT = t;
 			const se2::Pose est = filter.meanPose();
-			if (step.action)
-				if (const auto u = odometryIncrement(*step.action)) odo = se2::compose(odo, u->asTPose());
 			pathRbpf.write(summary.steps, t, est);
 			pathTum.write(summary.steps, t, est);
 			pathOdo.write(summary.steps, t, odo);
@@ -324,6 +353,19 @@ int CVSlamApp::run()
 	summary.actionFrameSteps = reader.actionFrameSteps();
 	summary.observationSteps = reader.observationSteps();
 	summary.skippedObjects = reader.skippedObjects();
+	if (frontEnd)
+	{
+		const auto& t = frontEnd->totalSeconds();
+		frontEndSummary.featuresSeconds = t.features;
+		frontEndSummary.searchSeconds = t.search;
+		frontEndSummary.poseSeconds = t.pose;
+		frontEndSummary.creationSeconds = t.creation;
+		const auto& db = frontEnd->database();
+		frontEndSummary.landmarks = db.size();
+		frontEndSummary.bytesPerLandmark = db.size() ? double(db.landmarkBytes()) / db.size() : 0.0;
+		frontEndSummary.indexBytes = static_cast<double>(db.indexBytes());
+		summary.frontEnd = frontEndSummary;
+	}
 
 	// Final outputs: also after an error or an interruption.
 	const auto& best = filter.particle(filter.bestParticleIndex());

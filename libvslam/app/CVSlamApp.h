@@ -20,6 +20,7 @@
 #include <libvslam/app/TVSlamAppOptions.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <string>
@@ -52,6 +53,7 @@ class CVSlamApp
 	mrpt::config::CConfigFileMemory params;
 	TVSlamAppOptions appOptions;
 	TVSlamFilterOptions filterOptions;
+	TVisualFrontEndOptions frontEndOptions;  //!< used when the rawlog has images
 
 	static std::string usage();
 	/** Every key with its default and documentation, as INI text. */

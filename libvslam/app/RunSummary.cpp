@@ -111,6 +111,22 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  step_max_ms: " << stepMaxMs << "\n"
 	  << "  faster_than_real_time: " << realTime(speedUp()) << "\n"
 	  << "peak_memory_MiB: " << peakMemoryMiB << "\n";
+	if (frontEnd)
+	{
+		const auto& e = *frontEnd;
+		const auto perImage = [&](double seconds) { return e.images ? 1000 * seconds / e.images : 0.0; };
+		o << "front_end:\n"
+		  << "  images: " << e.images << "\n"
+		  << "  measurements: " << e.measurements << "\n"
+		  << "  landmarks_created: " << e.created << "\n"
+		  << "  landmarks_pruned: " << e.pruned << "\n"
+		  << "  landmarks_in_database: " << e.landmarks << "\n"
+		  << "  bytes_per_landmark: " << e.bytesPerLandmark << "\n"
+		  << "  index_bytes: " << e.indexBytes << "\n"
+		  << "  ms_per_image: {features: " << perImage(e.featuresSeconds) << ", search: "
+		  << perImage(e.searchSeconds) << ", pose: " << perImage(e.poseSeconds)
+		  << ", creation: " << perImage(e.creationSeconds) << "}\n";
+	}
 	if (ate || odometryAte)
 	{
 		o << "error_vs_ground_truth_m:\n";

@@ -23,6 +23,15 @@ struct RunSummary
 	double realTimeSpan = 0;  //!< seconds of data processed (timestamps; 0: unknown)
 	std::optional<AteStats> ate, ateAligned, odometryAte;
 
+	/** The visual front-end, when the rawlog had camera images. */
+	struct FrontEnd
+	{
+		size_t images = 0, measurements = 0, created = 0, pruned = 0, landmarks = 0;
+		double featuresSeconds = 0, searchSeconds = 0, poseSeconds = 0, creationSeconds = 0;
+		double bytesPerLandmark = 0, indexBytes = 0;
+	};
+	std::optional<FrontEnd> frontEnd;
+
 	/** Data seconds per processing second (0: unknown). */
 	double speedUp() const;
 	/** Writes the summary with the filter's counters. */

@@ -1,0 +1,86 @@
+#pragma once
+/** \file RoomImageRawlog.h
+ * Test fixture: an image rawlog (actions/sensory frames) of a robot driving
+ * circles in the textured room of RoomRenderer.h, images at 2 Hz, with the
+ * true path as a TUM file. Odometry can carry a scale bias. Images are
+ * embedded, or stored externally in <rawlog name>_Images/ (MRPT's layout).
+ */
+#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/io/RawlogWriting.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationImage.h>
+#include <tests/support/RoomRenderer.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace vslam::testing
+{
+struct RoomRawlogOptions
+{
+	double laps = 1.5;
+	double odometryScale = 1.0;  //!< odometry distances times this
+	double odometryTurnScale = 1.0;  //!< odometry rotations times this
+	bool externalImages = false;
+};
+
+/** Writes `rawlog` and `<rawlog stem>_groundtruth.tum`; returns the image count. */
+inline int writeRoomImageRawlog(const std::string& rawlog, const RoomRawlogOptions& o = {})
+{
+	RoomRenderer room(5.0, 4.0, 2.5, 42);
+	mrpt::img::TCamera cam;
+	cam.ncols = 320;
+	cam.nrows = 240;
+	cam.setIntrinsicParamsFromValues(250, 250, 160, 120);
+	const mrpt::poses::CPose3D mount(0.1, 0, 0.3, -M_PI / 2, 0, -M_PI / 2);
+	const std::string imagesDir = CRawlogReader::imagesDirectory(rawlog);
+	if (o.externalImages) std::filesystem::create_directories(imagesDir);
+	std::ofstream gt(siblingFile(rawlog, "_groundtruth.tum"));
+	gt << std::setprecision(12);
+	std::vector<ActionFramePair> steps;
+	const double radius = 1.0, step = 0.075;
+	const int frames = static_cast<int>(o.laps * 2 * M_PI * radius / step);
+	mrpt::poses::CPose2D previous;
+	for (int k = 0; k < frames; k++)
+	{
+		const double a = k * step / radius, t = 1e9 + 0.5 * k;
+		const mrpt::poses::CPose2D robot(2.5 + radius * std::cos(a), 2.0 + radius * std::sin(a), a + M_PI / 2);
+		gt << t << " " << robot.x() << " " << robot.y() << " 0 0 0 " << std::sin(robot.phi() / 2) << " "
+		   << std::cos(robot.phi() / 2) << "\n";
+		auto acts = mrpt::obs::CActionCollection::Create();
+		if (k > 0)
+		{
+			mrpt::poses::CPose2D inc = robot - previous;
+			inc.x(inc.x() * o.odometryScale);
+			inc.y(inc.y() * o.odometryScale);
+			inc.phi(inc.phi() * o.odometryTurnScale);
+			mrpt::obs::CActionRobotMovement2D mv;
+			mv.computeFromOdometry(inc, {});
+			mv.timestamp = mrpt::Clock::fromDouble(t);
+			acts->insert(mv);
+		}
+		previous = robot;
+		auto obs = mrpt::obs::CObservationImage::Create();
+		obs->timestamp = mrpt::Clock::fromDouble(t);
+		obs->sensorLabel = "CAMERA";
+		obs->cameraParams = cam;
+		obs->cameraPose = mount;
+		const cv::Mat img = room.render(cam, mrpt::poses::CPose3D(robot) + mount);
+		if (o.externalImages)
+		{
+			const std::string name = "img_" + std::to_string(k) + ".png";
+			mrpt::img::CImage(img, mrpt::img::DEEP_COPY).saveToFile(imagesDir + "/" + name);
+			obs->image.setExternalStorage(name);
+		}
+		else
+			obs->image = mrpt::img::CImage(img, mrpt::img::DEEP_COPY);
+		auto sf = mrpt::obs::CSensoryFrame::Create();
+		sf->insert(obs);
+		steps.emplace_back(acts, sf);
+	}
+	writeActionFrameRawlog(rawlog, steps);
+	return frames;
+}
+}  // namespace vslam::testing
