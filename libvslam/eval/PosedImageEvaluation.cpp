@@ -1,5 +1,6 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/PosedImageEvaluation.h>
+#include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
@@ -82,6 +83,7 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 	const mrpt::poses::CPose3D mount = calibratedMount(views);
 	out.mount = mount;
 	const FeatureExtractor extractor(fe);
+	const DescriptorCodec codec(DescriptorCodec::parse(fe.descriptor_storage), fe.descriptor_dims);
 
 	auto t0 = std::chrono::steady_clock::now();
 	std::vector<ImageFeatures> features;
@@ -99,6 +101,7 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 		const auto calib = ImageCalibration::from(
 			cam, static_cast<int>(image.getWidth()), static_cast<int>(image.getHeight()), fe, v.imageFile);
 		features.push_back(extractor.extract(image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), calib));
+		features.back().codes = codec.toMatchingSpace(features.back().descriptors);
 	}
 	out.featureSeconds = seconds(t0);
 
@@ -150,6 +153,8 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 			out.creationScaleError.push_back(t.norm() / ttrue.norm() - 1);
 		}
 		created.landmark->id = frameView;
+		created.landmark->descriptors = codec.encode(created.landmark->descriptors);  // as the database stores it
+		out.landmarkBytes.push_back(static_cast<double>(created.landmark->bytes()));
 		for (int q = 0; q < n; q++)
 		{
 			if (q >= first && q <= frameView) continue;
@@ -229,6 +234,10 @@ std::string vslam::formatPosedImageEvaluation(const std::string& title, const Po
 	s << "\nLandmark creation, oldest view against the truth (medians): rotation " << std::setprecision(3)
 	  << median(e.creationRotationErrorDeg) << " deg, baseline direction " << median(e.creationDirectionErrorDeg)
 	  << " deg, baseline length " << median(scaleAbs) << " %\n";
+	double bytesSum = 0, bytesMax = 0;
+	for (double b : e.landmarkBytes) bytesSum += b, bytesMax = std::max(bytesMax, b);
+	s << "Landmark memory: mean " << std::setprecision(0) << (e.landmarkBytes.empty() ? 0 : bytesSum / e.landmarkBytes.size())
+	  << " bytes, max " << bytesMax << " bytes\n";
 	s << "Camera mount (mean of the views): yaw " << std::setprecision(2) << e.mount.yaw() / kDeg
 	  << " deg, pitch " << e.mount.pitch() / kDeg << " deg, roll " << e.mount.roll() / kDeg << " deg\n";
 	s << "Time: features " << std::setprecision(2) << e.featureSeconds << " s, creation " << e.creationSeconds

@@ -53,6 +53,7 @@ struct PosedImageEvaluation
 	mrpt::poses::CPose3D mount;  //!< the calibrated camera mount used
 	/** Per landmark built: its oldest view's refined pose against the truth. */
 	std::vector<double> creationRotationErrorDeg, creationDirectionErrorDeg, creationScaleError;
+	std::vector<double> landmarkBytes;  //!< per landmark built, as stored
 };
 
 /** The planar robot pose a camera stands for (see the file comment). */

@@ -6,14 +6,12 @@
 
 using namespace vslam;
 
-namespace
+CLandmarkDatabase::CLandmarkDatabase(const TVisualFrontEndOptions& options)
+	: m_options(options),
+	  m_codec(DescriptorCodec::parse(options.descriptor_storage), options.descriptor_dims),
+	  m_searchCodec(options.search_dims < 128 ? DescriptorCodec::Kind::Projected : DescriptorCodec::Kind::Float,
+		  options.search_dims)
 {
-constexpr int kDescriptorLength = 128;
-}
-
-CLandmarkDatabase::CLandmarkDatabase(const TVisualFrontEndOptions& options) : m_options(options)
-{
-	m_store.compact = options.compact_descriptors;
 	rebuildIndex();
 }
 
@@ -21,41 +19,38 @@ CLandmarkDatabase::~CLandmarkDatabase() = default;
 
 void CLandmarkDatabase::rebuildIndex()
 {
-	m_store.rows.clear();
-	m_store.owner.clear();
-	for (const auto& [id, lm] : m_landmarks)
-		for (int r = 0; r < lm.descriptors.rows; r++)
-		{
-			m_store.rows.push_back(lm.descriptors.ptr(r));
-			m_store.owner.push_back(id);
-		}
+	m_store = Store();
+	m_store.bytes = m_searchCodec.kind() == DescriptorCodec::Kind::Projected;
+	m_store.step = m_store.bytes ? DescriptorCodec::decode(cv::Mat(1, 1, CV_8S, cv::Scalar(1))).at<float>(0) : 1.0f;
+	for (const auto& [id, lm] : m_landmarks) addToStore(id, DescriptorCodec::decode(lm.descriptors));
 	m_removedRows = 0;
-	m_index = std::make_unique<Index>(kDescriptorLength, m_store, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+	m_index = std::make_unique<Index>(m_searchCodec.dims(), m_store, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+}
+
+void CLandmarkDatabase::addToStore(int64_t id, const cv::Mat& descriptors)
+{
+	// The search codes are made from the descriptors as matched (so a
+	// rebuild from stored uint8 codes gives what insertion gave).
+	m_store.blocks.push_back(m_searchCodec.encode(descriptors));
+	const cv::Mat& block = m_store.blocks.back();
+	for (int r = 0; r < block.rows; r++)
+	{
+		m_store.rows.push_back(block.ptr(r));
+		m_store.owner.push_back(id);
+	}
 }
 
 void CLandmarkDatabase::insert(VisualLandmarkModel lm)
 {
-	if (lm.descriptors.cols != kDescriptorLength || lm.descriptors.rows != static_cast<int>(lm.points.size()))
-		throw std::invalid_argument("landmark descriptors must be one 128-value row per point");
+	if (lm.descriptors.cols != 128 || lm.descriptors.rows != static_cast<int>(lm.points.size()))
+		throw std::invalid_argument("landmark descriptors must be one SIFT row (128 values) per point");
 	if (m_landmarks.count(lm.id)) throw std::invalid_argument("landmark ID " + std::to_string(lm.id) + " exists");
-	const int wanted = m_store.compact ? CV_8U : CV_32F;
-	if (lm.descriptors.type() != wanted)
-	{
-		cv::Mat converted;
-		lm.descriptors.convertTo(converted, wanted);  // rounds and saturates to 0..255 for 8-bit
-		lm.descriptors = converted;
-	}
-	else
-		lm.descriptors = lm.descriptors.clone();  // own, continuous storage
+	lm.descriptors = m_codec.encode(lm.descriptors);
 	const int64_t id = lm.id;
 	const auto& stored = m_landmarks.emplace(id, std::move(lm)).first->second;
 	if (stored.descriptors.rows == 0) return;
 	const size_t first = m_store.rows.size();
-	for (int r = 0; r < stored.descriptors.rows; r++)
-	{
-		m_store.rows.push_back(stored.descriptors.ptr(r));
-		m_store.owner.push_back(id);
-	}
+	addToStore(id, DescriptorCodec::decode(stored.descriptors));
 	m_index->addPoints(static_cast<uint32_t>(first), static_cast<uint32_t>(m_store.rows.size() - 1));
 }
 
@@ -90,12 +85,11 @@ const VisualLandmarkModel* CLandmarkDatabase::find(int64_t id) const
 std::vector<CLandmarkDatabase::Candidate> CLandmarkDatabase::candidates(const ImageFeatures& image) const
 {
 	std::vector<Candidate> out;
-	if (m_landmarks.empty() || image.descriptors.rows == 0) return out;
+	if (m_landmarks.empty() || image.searchCodes.rows == 0) return out;
 	std::map<int64_t, int> votes;
 	const float ratio2 = static_cast<float>(m_options.match_ratio * m_options.match_ratio);
 	const nanoflann::SearchParams params(32, static_cast<float>(m_options.search_eps));
-	cv::Mat query;
-	image.descriptors.convertTo(query, CV_32F);
+	const cv::Mat& query = image.searchCodes;
 	for (int q = 0; q < query.rows; q++)
 	{
 		uint32_t idx[2];
@@ -126,6 +120,7 @@ size_t CLandmarkDatabase::landmarkBytes() const
 size_t CLandmarkDatabase::indexBytes() const
 {
 	size_t b = m_store.rows.capacity() * sizeof(void*) + m_store.owner.capacity() * sizeof(int64_t);
+	for (const auto& block : m_store.blocks) b += block.total() * block.elemSize();
 	for (const auto& sub : m_index->getAllIndices())
 		b += sub.pool.usedMemory + sub.pool.wastedMemory + sub.vAcc.capacity() * sizeof(uint32_t);
 	return b;

@@ -39,6 +39,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	const auto calibration = ImageCalibration::from(obs.cameraParams, pixels.cols, pixels.rows, m_options, what);
 	CreationView view;
 	view.features = m_extractor.extract(pixels, calibration);
+	m_database.encode(view.features);
 	view.time = mrpt::Clock::toDouble(obs.timestamp);
 	view.cameraPose = mrpt::poses::CPose3D(odometryPose) + obs.cameraPose;
 	out.features = view.features.size();

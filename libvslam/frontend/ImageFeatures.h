@@ -19,6 +19,11 @@ struct ImageFeatures
 	std::vector<cv::Point2f> pixels;  //!< undistorted
 	std::vector<float> scales;  //!< keypoint size (for stats and point selection)
 	cv::Mat descriptors;  //!< N x 128, CV_32F
+	/** The descriptors in the landmark store's matching space (see
+	 * DescriptorCodec); empty: match the descriptors as they are. */
+	cv::Mat codes;
+	/** The descriptors in the database's search space (CV_32F). */
+	cv::Mat searchCodes;
 
 	size_t size() const { return pixels.size(); }
 };

@@ -1,3 +1,4 @@
+#include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <opencv2/calib3d.hpp>
@@ -7,19 +8,14 @@
 
 using namespace vslam;
 
-cv::Mat vslam::floatDescriptors(const cv::Mat& stored)
-{
-	if (stored.type() == CV_32F) return stored;
-	cv::Mat f;
-	stored.convertTo(f, CV_32F);
-	return f;
-}
+cv::Mat vslam::floatDescriptors(const cv::Mat& stored) { return DescriptorCodec::decode(stored); }
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& lm, const mrpt::poses::CPose3D& mount,
 	const TVisualFrontEndOptions& o)
 {
-	const auto matches = matchDescriptors(image.descriptors, floatDescriptors(lm.descriptors), o.match_ratio);
+	const cv::Mat& query = image.codes.empty() ? image.descriptors : image.codes;
+	const auto matches = matchDescriptors(query, floatDescriptors(lm.descriptors), o.match_ratio);
 	if (static_cast<int>(matches.size()) < o.recognition_min_inliers) return std::nullopt;
 	std::vector<cv::Point3f> object;
 	std::vector<cv::Point2f> pixels;

@@ -34,6 +34,6 @@ std::optional<VisualMeasurement> recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& landmark,
 	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& options);
 
-/** Float descriptors of a landmark (compact ones converted back). */
+/** A landmark's stored descriptors in the matching space (decoded). */
 cv::Mat floatDescriptors(const cv::Mat& stored);
 }  // namespace vslam

@@ -2,6 +2,9 @@
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 
+#include <algorithm>
+#include <vector>
+
 using namespace vslam;
 using namespace vslam::config;
 
@@ -41,7 +44,13 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
-	compact_descriptors = readBool(c, s, "compact_descriptors", compact_descriptors);
+	search_dims = readCount("search_dims", search_dims, 4, 128);
+	{
+		static const std::vector<std::string> kinds{"float", "uint8", "projected"};
+		const size_t def = std::find(kinds.begin(), kinds.end(), descriptor_storage) - kinds.begin();
+		descriptor_storage = kinds[readChoice(c, s, "descriptor_storage", def, kinds)];
+	}
+	descriptor_dims = readCount("descriptor_dims", descriptor_dims, 4, 128);
 	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
 	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
 	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
@@ -79,7 +88,9 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
 	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC iterations");
 	c.write(s, "search_eps", search_eps, 30, 10, "Approximate descriptor search (nanoflann eps; 0: exact)");
-	c.write(s, "compact_descriptors", compact_descriptors, 30, 10, "Store descriptors as 8-bit integers");
+	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
+	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | projected (descriptor_dims B)");
+	c.write(s, "descriptor_dims", descriptor_dims, 30, 10, "Dimensions kept by the projected storage");
 	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
 	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");
 	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");

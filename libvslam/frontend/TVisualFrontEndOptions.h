@@ -7,6 +7,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <cstdint>
+#include <string>
 
 namespace vslam
 {
@@ -48,9 +49,15 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
 	int recognition_ransac_iterations = 300;
 	/** Approximate search: nanoflann's eps (0: exact). */
-	double search_eps = 0.5;
-	/** Descriptors stored as 8-bit integers (4x smaller) instead of floats. */
-	bool compact_descriptors = true;
+	double search_eps = 2.0;
+	/** The k-d tree votes in a random projection of the descriptors to this
+	 * many dimensions (signed bytes; 128: no projection). Candidates are
+	 * then verified with the stored descriptors. */
+	int search_dims = 16;
+	/** How descriptors are stored and matched (DescriptorCodec.h): float,
+	 * uint8 (128 bytes) or projected (descriptor_dims signed bytes). */
+	std::string descriptor_storage = "uint8";
+	int descriptor_dims = 32;
 
 	// Map bounding
 	/** Most landmarks kept (0: no limit); beyond it the least useful go. */

@@ -1,0 +1,50 @@
+#pragma once
+/** \file DescriptorCodec.h
+ * How landmark descriptors are stored (the paper's weak point: 40-500 kB
+ * per landmark). SIFT descriptors are 128 values in 0..255:
+ *  - float: as computed, 512 bytes each;
+ *  - uint8: rounded to bytes, 128 bytes, nothing lost but rounding;
+ *  - projected: a fixed random orthonormal projection to `dims` values
+ *    (Johnson-Lindenstrauss: distances are kept up to a small relative
+ *    error), each rounded to a signed byte: `dims` bytes.
+ * Matching and the k-d tree work on the decoded codes (floats), and image
+ * descriptors go through the same encoding first, so both sides carry the
+ * same rounding. The projection is drawn from a fixed seed: the same on
+ * every run and machine, and independent of any data.
+ */
+#include <opencv2/core.hpp>
+
+#include <string>
+
+namespace vslam
+{
+class DescriptorCodec
+{
+   public:
+	enum class Kind
+	{
+		Float,
+		Uint8,
+		Projected
+	};
+	DescriptorCodec(Kind kind, int projectedDims);
+
+	/** N x 128 CV_32F SIFT descriptors -> stored codes. */
+	cv::Mat encode(const cv::Mat& descriptors) const;
+	/** Stored codes -> N x dims() CV_32F, the space matching happens in. */
+	static cv::Mat decode(const cv::Mat& codes);
+	/** decode(encode(d)): image descriptors in the matching space. */
+	cv::Mat toMatchingSpace(const cv::Mat& descriptors) const { return decode(encode(descriptors)); }
+
+	Kind kind() const { return m_kind; }
+	int dims() const { return m_kind == Kind::Projected ? m_projection.rows : 128; }
+	size_t bytesPerDescriptor() const;
+
+	static Kind parse(const std::string& name);  //!< float | uint8 | projected
+	static const char* name(Kind kind);
+
+   private:
+	Kind m_kind;
+	cv::Mat m_projection;  //!< dims x 128, CV_32F, orthonormal rows
+};
+}  // namespace vslam

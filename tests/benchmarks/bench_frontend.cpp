@@ -1,0 +1,171 @@
+/** Visual front-end speed (Google Benchmark): one camera image end to end
+ * (SIFT features, encoding, the database search, PnP on the candidates)
+ * against a database of L landmarks, at 320x240 and 640x480.
+ *
+ * The database holds one true landmark of the scene in view, built by the
+ * front-end's own creation from three rendered views (tests/support/
+ * RoomRenderer.h), and L-1 others made of real SIFT descriptors from
+ * renderings of other rooms (rows drawn from a pool, with noise) at random
+ * 3-D points, so the search meets realistic descriptors everywhere.
+ *
+ *   bench_frontend --benchmark_filter='Frame/640/1000/' [--set vslam_frontend.KEY=VALUE ...]
+ * Counters: frames/s (items_per_second) and ms per stage: features_ms,
+ * search_ms, pose_ms; bytes_per_landmark (points + stored descriptors) and
+ * index_bytes_per_landmark. */
+#include <benchmark/benchmark.h>
+#include <libvslam/config/Overrides.h>
+#include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/LandmarkCreator.h>
+#include <libvslam/frontend/LandmarkRecognizer.h>
+#include <tests/support/RoomRenderer.h>
+
+#include <chrono>
+#include <random>
+
+using namespace vslam;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+const mrpt::poses::CPose3D kMount(0.1, 0, 0.3, -90 * kDeg, 0, -90 * kDeg);
+
+mrpt::img::TCamera camera(int width)
+{
+	mrpt::img::TCamera c;
+	c.ncols = width;
+	c.nrows = width * 3 / 4;
+	c.setIntrinsicParamsFromValues(0.8 * width, 0.8 * width, width / 2.0, width * 3 / 8.0);
+	return c;
+}
+
+std::vector<vslam::config::Override> gOverrides;
+
+TVisualFrontEndOptions benchOptions()
+{
+	TVisualFrontEndOptions o;
+	const auto cfg = vslam::config::parseIniWithOverrides("", gOverrides);
+	o.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
+	return o;
+}
+
+struct Scene
+{
+	TVisualFrontEndOptions options = benchOptions();
+	FeatureExtractor extractor{options};
+	ImageCalibration calibration;
+	cv::Mat query;  //!< the image every iteration processes
+	std::unique_ptr<CLandmarkDatabase> database;
+};
+
+std::unique_ptr<Scene> makeScene(int width, int landmarks)
+{
+	auto s = std::make_unique<Scene>();
+	const auto cam = camera(width);
+	s->calibration = ImageCalibration::from(cam, cam.ncols, cam.nrows, s->options, "bench");
+	s->database = std::make_unique<CLandmarkDatabase>(s->options);
+	const vslam::testing::RoomRenderer room(5.0, 4.0, 2.5, 42);
+	const auto render = [&](const vslam::testing::RoomRenderer& r, const mrpt::poses::CPose2D& p) {
+		return r.render(cam, mrpt::poses::CPose3D(p) + kMount);
+	};
+	// The true landmark: three views 0.2 m apart.
+	std::vector<CreationView> views(3);
+	for (int i = 0; i < 3; i++)
+	{
+		const mrpt::poses::CPose2D p(1.0 + 0.2 * i, 2.0, 0);
+		views[i].features = s->extractor.extract(render(room, p), s->calibration);
+		views[i].cameraPose = mrpt::poses::CPose3D(p) + kMount;
+	}
+	auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, s->options);
+	if (!created.landmark) throw std::runtime_error("bench: no landmark: " + created.why);
+	created.landmark->id = 0;
+	s->database->insert(*created.landmark);
+	s->query = render(room, mrpt::poses::CPose2D(1.6, 2.2, -5 * kDeg));
+
+	// Others: real descriptors from other rooms, random points.
+	cv::Mat pool;
+	for (uint32_t seed = 1; pool.rows < 20000 && seed < 40; seed++)
+	{
+		const vslam::testing::RoomRenderer other(5.0, 4.0, 2.5, 1000 + seed);
+		for (double a : {0.0, 1.6, 3.2, 4.8})
+			pool.push_back(s->extractor.extract(render(other, mrpt::poses::CPose2D(2.5, 2.0, a)), s->calibration).descriptors);
+	}
+	std::mt19937 rng(7);
+	std::uniform_int_distribution<int> row(0, pool.rows - 1);
+	std::normal_distribution<float> g;
+	const int points = static_cast<int>(created.landmark->points.size());
+	for (int id = 1; id < landmarks; id++)
+	{
+		VisualLandmarkModel lm;
+		lm.id = id;
+		lm.descriptors = cv::Mat(points, 128, CV_32F);
+		for (int r = 0; r < points; r++)
+		{
+			pool.row(row(rng)).copyTo(lm.descriptors.row(r));
+			for (int d = 0; d < 128; d++)
+				lm.descriptors.at<float>(r, d) = std::max(0.0f, lm.descriptors.at<float>(r, d) + 3 * g(rng));
+			lm.points.emplace_back(2 + g(rng), g(rng), g(rng));
+		}
+		s->database->insert(std::move(lm));
+	}
+	return s;
+}
+
+double ms(std::chrono::steady_clock::time_point since)
+{
+	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+void Frame(benchmark::State& state)
+{
+	const int width = static_cast<int>(state.range(0));
+	const int landmarks = static_cast<int>(state.range(1));
+	const auto scene = makeScene(width, landmarks);
+	double features = 0, search = 0, pose = 0;
+	size_t recognized = 0;
+	for (auto _ : state)
+	{
+		auto t = std::chrono::steady_clock::now();
+		ImageFeatures f = scene->extractor.extract(scene->query, scene->calibration);
+		scene->database->encode(f);
+		features += ms(t);
+		t = std::chrono::steady_clock::now();
+		const auto candidates = scene->database->candidates(f);
+		search += ms(t);
+		t = std::chrono::steady_clock::now();
+		for (const auto& c : candidates)
+			if (recognizeLandmark(f, *scene->database->find(c.id), kMount, scene->options)) recognized++;
+		pose += ms(t);
+	}
+	const double n = static_cast<double>(state.iterations());
+	state.SetItemsProcessed(state.iterations());
+	state.counters["features_ms"] = features / n;
+	state.counters["search_ms"] = search / n;
+	state.counters["pose_ms"] = pose / n;
+	state.counters["recognized_per_frame"] = recognized / n;
+	state.counters["bytes_per_landmark"] = double(scene->database->landmarkBytes()) / landmarks;
+	state.counters["index_bytes_per_landmark"] = double(scene->database->indexBytes()) / landmarks;
+}
+}  // namespace
+
+BENCHMARK(Frame)
+	->ArgsProduct({{320, 640}, {10, 100, 1000, 5000}})
+	->Unit(benchmark::kMillisecond)
+	->MinTime(2.0);
+
+int main(int argc, char** argv)
+{
+	// --set vslam_frontend.KEY=VALUE (repeatable) before the benchmark's own flags.
+	std::vector<char*> rest{argv[0]};
+	for (int i = 1; i < argc; i++)
+	{
+		if (std::string(argv[i]) == "--set" && i + 1 < argc)
+			gOverrides.push_back(vslam::config::parseOverride(argv[++i]));
+		else
+			rest.push_back(argv[i]);
+	}
+	int n = static_cast<int>(rest.size());
+	benchmark::Initialize(&n, rest.data());
+	benchmark::RunSpecifiedBenchmarks();
+	benchmark::Shutdown();
+	return 0;
+}
