@@ -156,6 +156,15 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 						"range-bearing observation '" + br->sensorLabel +
 						"' has no noise figure: set [vslam_range_bearing] "
 						"std_range and std_bearing_deg");
+				if (!(stdR < 1e6) || !(stdB <= 2 * M_PI) || !(std::abs(d.range) < 1e6))
+					throw InputError("range-bearing observation '" + br->sensorLabel +
+						"': range " + std::to_string(d.range) + " m, noise " + std::to_string(stdR) +
+						" m / " + std::to_string(stdB) + " rad are beyond any sensor: corrupt data");
+				const auto& sp = br->sensorLocationOnRobot;
+				if (!std::isfinite(sp.x()) || !std::isfinite(sp.y()) || !std::isfinite(sp.yaw()) ||
+					std::abs(sp.x()) > 1e3 || std::abs(sp.y()) > 1e3)
+					throw InputError("range-bearing observation '" + br->sensorLabel +
+						"': sensor pose on the robot is not finite or is kilometres away: corrupt data");
 				m_stats.rangeBearingAccepted++;
 				LandmarkMeasurement m;
 				m.key = {LandmarkKind::Point, d.landmarkID};

@@ -117,3 +117,35 @@ TEST(CMeasurementExtractor, RangeBearingWithoutAnyNoiseFigureIsAnError)
 		EXPECT_NE(std::string(e.what()).find("std_range"), std::string::npos);
 	}
 }
+
+// Found by fuzz_rawlog: a sensor pose of NaN made every particle's weight
+// NaN, and MRPT's resampling then failed an assertion.
+TEST(CMeasurementExtractor, ImpossibleRangeBearingValuesAreInputErrors)
+{
+	const auto expectError = [](const mrpt::obs::CObservationBearingRange::Ptr& br, const char* part) {
+		CMeasurementExtractor ex;
+		mrpt::obs::CSensoryFrame sf;
+		sf.insert(br);
+		try
+		{
+			ex.extract(sf);
+			ADD_FAILURE() << "no error for " << part;
+		}
+		catch (const InputError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+		}
+	};
+	auto nanPose = bearingRange();
+	nanPose->sensorLocationOnRobot = mrpt::poses::CPose3D(std::nan(""), 0, 0, 0, 0, 0);
+	expectError(nanPose, "sensor pose");
+	auto farPose = bearingRange();
+	farPose->sensorLocationOnRobot = mrpt::poses::CPose3D(1e9, 0, 0, 0, 0, 0);
+	expectError(farPose, "sensor pose");
+	auto hugeNoise = bearingRange();
+	hugeNoise->sensor_std_range = 1e30f;
+	expectError(hugeNoise, "beyond any sensor");
+	auto hugeRange = bearingRange();
+	hugeRange->sensedData[0].range = 1e20f;
+	expectError(hugeRange, "beyond any sensor");
+}

@@ -114,6 +114,12 @@ void CRawlogReader::checkOdometry(const mrpt::obs::CActionCollection& a, size_t 
 	const auto p = odometryIncrement(a);
 	if (p && (!std::isfinite(p->x()) || !std::isfinite(p->y()) || !std::isfinite(p->phi())))
 		fail(entry, "odometry increment is not finite (NaN or inf)");
+	// No robot moves kilometres between two odometry readings: such a value
+	// is corrupt data (and would overflow everything downstream).
+	constexpr double kMaxIncrement = 1e4;  // m, rad
+	if (p && (std::abs(p->x()) > kMaxIncrement || std::abs(p->y()) > kMaxIncrement || std::abs(p->phi()) > kMaxIncrement))
+		fail(entry, "odometry increment (" + std::to_string(p->x()) + ", " + std::to_string(p->y()) + ", " +
+			std::to_string(p->phi()) + ") is beyond any robot's motion between readings: corrupt data");
 }
 
 bool CRawlogReader::next(RawlogStep& step)

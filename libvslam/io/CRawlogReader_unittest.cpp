@@ -30,7 +30,7 @@ CObservationVisualLandmark::Ptr visual(int64_t id, double t)
 }
 
 /** Format #1: n (action, sensory frame) pairs. */
-void writeFormat1(const std::string& file, int n, double nanAt = -1)
+void writeFormat1(const std::string& file, int n, double nanAt = -1, double badDx = std::nan(""))
 {
 	mrpt::io::CFileGZOutputStream out(file);
 	auto arch = mrpt::serialization::archiveFrom(out);
@@ -38,7 +38,7 @@ void writeFormat1(const std::string& file, int n, double nanAt = -1)
 	{
 		mrpt::obs::CActionCollection acts;
 		mrpt::obs::CActionRobotMovement2D mv;
-		const double dx = i == nanAt ? std::nan("") : 0.1;
+		const double dx = i == nanAt ? badDx : 0.1;
 		mv.computeFromOdometry(mrpt::poses::CPose2D(dx, 0, 0.01), {});
 		mv.timestamp = at(i);
 		acts.insert(mv);
@@ -266,6 +266,15 @@ TEST(CCheckedGzInputStream, PeekedBytesAreReadAgain)
 	EXPECT_EQ(std::string(buf, 4), "cdef");
 	EXPECT_EQ(in.Read(buf, 4), 0u);
 	EXPECT_EQ(in.peek(4), "");
+}
+
+TEST(CRawlogReader, OdometryIncrementsBeyondAnyRobotAreCorrupt)
+{
+	TempDir dir;
+	writeFormat1(dir.file("huge.rawlog"), 10, 4, 1e9);
+	const std::string e = errorOf(dir.file("huge.rawlog"));
+	EXPECT_NE(e.find("entry 8"), std::string::npos) << e;
+	EXPECT_NE(e.find("beyond any robot's motion"), std::string::npos) << e;
 }
 
 TEST(CRawlogReader, UnknownClassesAreNamed)
