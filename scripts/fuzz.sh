@@ -5,7 +5,7 @@
 #
 #   scripts/fuzz.sh [SECONDS] [TARGETS]
 #
-# Defaults: 60 s; "fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map".
+# Defaults: 60 s; "fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map fuzz_frontend".
 # Needs clang and libclang-rt-14-dev (installed here if missing) and a normal
 # build for the seed rawlogs (scripts/setup.sh build). Findings are saved as
 # build-fuzz/findings/<target>/{crash,timeout,oom}-*; reproduce one with
@@ -13,7 +13,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_PER_TARGET="${1:-60}"
-TARGETS="${2:-fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map}"
+TARGETS="${2:-fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map fuzz_frontend}"
 BUILD="$ROOT/build-fuzz"
 BIN="$ROOT/build/bin"
 
@@ -32,7 +32,7 @@ cmake --build "$BUILD" -j "$(nproc)" --target $TARGETS > "$BUILD/build.log" ||
 
 # Seed corpora from real files.
 SEEDS="$BUILD/seeds"
-rm -rf "$SEEDS" && mkdir -p "$SEEDS"/{fuzz_rawlog,fuzz_observations,fuzz_config,fuzz_mrclam,fuzz_landmark_map}
+rm -rf "$SEEDS" && mkdir -p "$SEEDS"/{fuzz_rawlog,fuzz_observations,fuzz_config,fuzz_mrclam,fuzz_landmark_map,fuzz_frontend}
 for ini in simul_demo_visual simul_range_bearing; do
   "$BIN/vslam-simul-measurements" "$ROOT/config_ini/$ini.ini" "$SEEDS/$ini.rawlog" \
     --set vslam_sim.duration=15 --set vslam_sim.mapping_duration=0 --set vslam_sim.kidnap_times= > /dev/null
@@ -45,6 +45,7 @@ for ini in simul_demo_visual simul_range_bearing; do
 done
 gzip -dc "$ROOT/rawlogs/demo_visual.rawlog" | head -c 2000000 > "$SEEDS/demo.plain" || true
 python3 "$ROOT/tests/fuzz/make_observation_seeds.py" "$SEEDS/demo.plain" "$SEEDS/fuzz_observations"
+python3 "$ROOT/tests/fuzz/make_frontend_seeds.py" "$SEEDS/fuzz_frontend"
 head -c 20000 "$ROOT/rawlogs/demo_visual.rawlog" > "$SEEDS/fuzz_rawlog/demo_head.rawlog"
 for ini in "$ROOT"/config_ini/*.ini "$ROOT"/config_ini/peers/*.ini; do
   cp "$ini" "$SEEDS/fuzz_config/$(basename "$ini")"
