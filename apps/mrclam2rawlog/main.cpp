@@ -5,8 +5,8 @@
  *                 [--max-step-gap S] [--std-range M] [--std-bearing-deg D]
  *
  * Writes OUTPUT.rawlog, OUTPUT_groundtruth.tum and OUTPUT_landmarks.txt. */
+#include <libvslam/app/ToolMain.h>
 #include <libvslam/core/InputError.h>
-#include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/MrclamImporter.h>
 #include <libvslam/io/RawlogWriting.h>
 
@@ -37,8 +37,7 @@ double number(const std::string& flag, const char* text)
 int main(int argc, const char** argv)
 {
 	using namespace vslam;
-	try
-	{
+	return vslam::runTool("mrclam2rawlog", kUsage, [&]() -> int {
 		TMrclamImportOptions o;
 		std::vector<std::string> positional;
 		for (int i = 1; i < argc; i++)
@@ -88,20 +87,5 @@ int main(int argc, const char** argv)
 				  << "in the world frame: (" << im.startPoseWorld.x << ", " << im.startPoseWorld.y
 				  << ", " << im.startPoseWorld.phi << " rad) -> " << rawlog << "\n";
 		return 0;
-	}
-	catch (const std::invalid_argument& e)
-	{
-		std::cerr << "mrclam2rawlog: error: " << e.what() << "\n" << kUsage;
-		return 1;
-	}
-	catch (const InputError& e)
-	{
-		std::cerr << "mrclam2rawlog: error: " << e.what() << "\n";
-		return 3;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "mrclam2rawlog: error: " << exceptionText(e) << "\n";
-		return 4;
-	}
+	});
 }

@@ -9,22 +9,19 @@
  *
  *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]
  */
+#include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/IniText.h>
-#include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
 #include <libvslam/io/CRawlogReader.h>
-#include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/obs/registerClasses.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace
 {
@@ -37,8 +34,7 @@ int main(int argc, const char** argv)
 {
 	using namespace vslam;
 	registerObservationClasses();
-	try
-	{
+	return vslam::runTool("vslam-frontend", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
 		std::string iniFile;
@@ -67,28 +63,7 @@ int main(int argc, const char** argv)
 				positional.push_back(a);
 		}
 		if (positional.size() != 2) throw std::invalid_argument("expected IN.rawlog OUT.rawlog");
-		std::string text;
-		if (!iniFile.empty())
-		{
-			std::ifstream in(iniFile);
-			if (!in) throw ConfigError("cannot read configuration file '" + iniFile + "'");
-			std::stringstream buf;
-			buf << in.rdbuf();
-			text = buf.str();
-		}
-		TVisualFrontEndOptions options;
-		try
-		{
-			const auto cfg = config::parseIniWithOverrides(text, overrides);
-			config::KnownKeys known;
-			known.addFromOptions(options, TVisualFrontEndOptions::kSection);
-			config::checkNoUnknownKeys(cfg, known, TVisualFrontEndOptions::kSection);
-			options.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
-		}
-		catch (const ConfigError& e)
-		{
-			throw ConfigError((iniFile.empty() ? "--set" : "'" + iniFile + "'") + std::string(": ") + e.what());
-		}
+		const TVisualFrontEndOptions options = loadFrontEndOptions(iniFile, overrides);
 
 		const auto start = std::chrono::steady_clock::now();
 		CRawlogReader reader(positional[0]);
@@ -125,20 +100,5 @@ int main(int argc, const char** argv)
 				  << perImage(t.search) << ", pose " << perImage(t.pose) << ", creation "
 				  << perImage(t.creation) << "; total " << seconds << " s -> " << positional[1] << "\n";
 		return 0;
-	}
-	catch (const std::invalid_argument& e)
-	{
-		std::cerr << "vslam-frontend: error: " << e.what() << "\n" << kUsage;
-		return 1;
-	}
-	catch (const ConfigError& e)
-	{
-		std::cerr << "vslam-frontend: error: configuration " << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "vslam-frontend: error: " << exceptionText(e) << "\n";
-		return 3;
-	}
+	});
 }

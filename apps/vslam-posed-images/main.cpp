@@ -10,17 +10,15 @@
  * --odometry-noise: std of the relative translation error and of the heading
  * error (deg) added to each increment between creation views (0.02 1).
  */
+#include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
-#include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/PosedImageEvaluation.h>
-#include <libvslam/io/ExceptionText.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace
 {
@@ -32,8 +30,7 @@ const char* kUsage =
 int main(int argc, const char** argv)
 {
 	using namespace vslam;
-	try
-	{
+	return vslam::runTool("vslam-posed-images", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
 		std::string iniFile, csvFile;
@@ -69,23 +66,7 @@ int main(int argc, const char** argv)
 				positional.push_back(a);
 		}
 		if (positional.size() != 1) throw std::invalid_argument("expected one FOLDER");
-		std::string text;
-		if (!iniFile.empty())
-		{
-			std::ifstream in(iniFile);
-			if (!in) throw ConfigError("cannot read configuration file '" + iniFile + "'");
-			std::stringstream buf;
-			buf << in.rdbuf();
-			text = buf.str();
-		}
-		TVisualFrontEndOptions frontEnd;
-		{
-			const auto cfg = config::parseIniWithOverrides(text, overrides);
-			config::KnownKeys known;
-			known.addFromOptions(frontEnd, TVisualFrontEndOptions::kSection);
-			config::checkNoUnknownKeys(cfg, known, TVisualFrontEndOptions::kSection);
-			frontEnd.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
-		}
+		const TVisualFrontEndOptions frontEnd = loadFrontEndOptions(iniFile, overrides);
 		const auto views = readStrechaDataset(positional[0]);
 		const auto result = evaluatePosedImages(views, frontEnd, options);
 		const std::string title = std::filesystem::path(positional[0]).lexically_normal().filename().string();
@@ -101,20 +82,5 @@ int main(int argc, const char** argv)
 					<< r.NPoints << "," << r.ProjErrRMS << "," << r.Slope << "\n";
 		}
 		return 0;
-	}
-	catch (const std::invalid_argument& e)
-	{
-		std::cerr << "vslam-posed-images: error: " << e.what() << "\n" << kUsage;
-		return 1;
-	}
-	catch (const ConfigError& e)
-	{
-		std::cerr << "vslam-posed-images: error: configuration: " << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "vslam-posed-images: error: " << exceptionText(e) << "\n";
-		return 3;
-	}
+	});
 }

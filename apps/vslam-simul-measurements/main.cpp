@@ -4,11 +4,11 @@
  *
  * Reads [vslam_sim] (see config_ini/simul_measurements_example.ini) and
  * writes OUTPUT.rawlog, OUTPUT_groundtruth.tum and OUTPUT_landmarks.txt. */
+#include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/InputError.h>
-#include <libvslam/io/ExceptionText.h>
 #include <libvslam/sim/SimulatedRunFiles.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -26,8 +26,7 @@ const char* kUsage =
 int main(int argc, const char** argv)
 {
 	using namespace vslam;
-	try
-	{
+	return vslam::runTool("vslam-simul-measurements", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
 		for (int i = 1; i < argc; i++)
@@ -81,20 +80,5 @@ int main(int argc, const char** argv)
 				  << run.rangeBearingMeasurements << " range-bearing measurements -> "
 				  << rawlog << "\n";
 		return 0;
-	}
-	catch (const std::invalid_argument& e)
-	{
-		std::cerr << "vslam-simul-measurements: error: " << e.what() << "\n" << kUsage;
-		return 1;
-	}
-	catch (const ConfigError& e)
-	{
-		std::cerr << "vslam-simul-measurements: error: configuration: " << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "vslam-simul-measurements: error: " << exceptionText(e) << "\n";
-		return 3;
-	}
+	});
 }

@@ -100,7 +100,7 @@ std::array<double, 3> createAndRecognize(double pixelNoise, uint32_t seed)
 	EXPECT_GE(created.landmark->points.size(), 150u);
 	EXPECT_LT(created.landmark->reprojectionRms, 2 * pixelNoise + 0.01);
 	std::array<double, 3> worst{0, 0, 0};
-	for (const mrpt::poses::CPose2D query : {mrpt::poses::CPose2D(1.0, 0.5, -10 * kDeg),
+	for (const mrpt::poses::CPose2D& query : {mrpt::poses::CPose2D(1.0, 0.5, -10 * kDeg),
 			 mrpt::poses::CPose2D(-0.5, -0.6, 15 * kDeg), mrpt::poses::CPose2D(1.8, -0.2, 5 * kDeg)})
 	{
 		const auto m = recognizeLandmark(view(scene, query, rng, pixelNoise), *created.landmark, kMount, o);

@@ -1,8 +1,11 @@
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 using namespace vslam;
@@ -97,4 +100,32 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "fy", fy, 30, 10, "Focal length override [px] (0: from each image)");
 	c.write(s, "cx", cx, 30, 10, "Principal point override [px] (with fx, fy)");
 	c.write(s, "cy", cy, 30, 10, "Principal point override [px] (with fx, fy)");
+}
+
+TVisualFrontEndOptions vslam::loadFrontEndOptions(
+	const std::string& iniFile, const std::vector<config::Override>& overrides)
+{
+	std::string text;
+	if (!iniFile.empty())
+	{
+		std::ifstream in(iniFile);
+		if (!in) throw ConfigError("cannot read configuration file '" + iniFile + "'");
+		std::stringstream buf;
+		buf << in.rdbuf();
+		text = buf.str();
+	}
+	TVisualFrontEndOptions options;
+	try
+	{
+		const auto cfg = config::parseIniWithOverrides(text, overrides);
+		config::KnownKeys known;
+		known.addFromOptions(options, TVisualFrontEndOptions::kSection);
+		config::checkNoUnknownKeys(cfg, known, TVisualFrontEndOptions::kSection);
+		options.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
+	}
+	catch (const ConfigError& e)
+	{
+		throw ConfigError((iniFile.empty() ? std::string("--set") : "'" + iniFile + "'") + ": " + e.what());
+	}
+	return options;
 }

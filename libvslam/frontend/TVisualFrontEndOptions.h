@@ -4,10 +4,12 @@
  * features, landmark creation from a few views along the robot's motion,
  * the landmark database and recognition by a robust pose solve.
  */
+#include <libvslam/config/Overrides.h>
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vslam
 {
@@ -74,4 +76,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	void saveToConfigFile(
 		mrpt::config::CConfigFileBase& target, const std::string& section) const override;
 };
+
+/** The [vslam_frontend] options of an INI file ("" for none) with `--set`
+ * overrides, strictly (unknown keys and bad values are ConfigError naming
+ * the file). Used by the apps that run the front-end alone. */
+TVisualFrontEndOptions loadFrontEndOptions(
+	const std::string& iniFile, const std::vector<config::Override>& overrides);
 }  // namespace vslam

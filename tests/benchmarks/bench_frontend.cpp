@@ -40,13 +40,7 @@ mrpt::img::TCamera camera(int width)
 
 std::vector<vslam::config::Override> gOverrides;
 
-TVisualFrontEndOptions benchOptions()
-{
-	TVisualFrontEndOptions o;
-	const auto cfg = vslam::config::parseIniWithOverrides("", gOverrides);
-	o.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
-	return o;
-}
+TVisualFrontEndOptions benchOptions() { return loadFrontEndOptions("", gOverrides); }
 
 struct Scene
 {
