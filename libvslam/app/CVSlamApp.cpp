@@ -299,10 +299,12 @@ int CVSlamApp::run()
 			{
 				pf.executeOn(filter, step.action.get(), step.sf.get());
 			}
-			catch (const InputError& e)
+			catch (const std::exception& e)
 			{
-				throw InputError("rawlog '" + m_rawlogFile + "', entry " +
-					std::to_string(step.entry) + ": " + e.what());
+				// Bad data found by the filter arrives wrapped by MRPT.
+				const std::string why = filter.takeInputError();
+				if (why.empty()) throw;
+				throw InputError("rawlog '" + m_rawlogFile + "', entry " + std::to_string(step.entry) + ": " + why);
 			}
 			const double ms = std::chrono::duration<double, std::milli>(
 								  std::chrono::steady_clock::now() - t0).count();

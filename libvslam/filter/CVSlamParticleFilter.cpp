@@ -84,9 +84,26 @@ void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
 	const mrpt::obs::CSensoryFrame* sf,
 	const mrpt::bayes::CParticleFilter::TParticleFilterOptions& /*o*/)
 {
-	if (action)
-		if (const auto u = odometryIncrement(*action)) addOdometryIncrement(u->asTPose());
-	if (sf) processFrame(m_extractor.extract(*sf));
+	// MRPT's executeOn() rethrows everything wrapped in its own exception
+	// type, so the message of bad input is kept for takeInputError().
+	try
+	{
+		if (action)
+			if (const auto u = odometryIncrement(*action)) addOdometryIncrement(u->asTPose());
+		if (sf) processFrame(m_extractor.extract(*sf));
+	}
+	catch (const InputError& e)
+	{
+		m_inputError = e.what();
+		throw;
+	}
+}
+
+std::string CVSlamParticleFilter::takeInputError()
+{
+	std::string e;
+	e.swap(m_inputError);
+	return e;
 }
 
 void CVSlamParticleFilter::processFrame(const FrameMeasurements& input)

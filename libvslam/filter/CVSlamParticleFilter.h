@@ -93,6 +93,12 @@ class CVSlamParticleFilter
 	const TVSlamFilterOptions& options() const { return m_options; }
 
 	// ---- inputs ---------------------------------------------------------
+	/** The message of the InputError the last step threw ("" if none), and
+	 * clears it. Run through mrpt::bayes::CParticleFilter::executeOn(), an
+	 * InputError arrives wrapped in MRPT's exception type; this tells the
+	 * caller it was bad input and why. */
+	std::string takeInputError();
+
 	/** Appends one odometry increment; throws InputError if not finite. */
 	void addOdometryIncrement(const se2::Pose& u);
 	/** Processes the measurements and creation events of one frame. */
@@ -149,6 +155,7 @@ class CVSlamParticleFilter
 	std::optional<mrpt::Clock::time_point> m_lastFrameTime;
 	std::vector<PoseGaussianProposal> m_proposalBuffer;  //!< reused per frame
 	mrpt::random::CRandomGenerator& m_rng;
+	std::string m_inputError;  //!< see takeInputError()
 
 	void updateWithFrame(const FrameMeasurements& frame);
 	/** The frame's measurements with the timestamp-jitter noise added. */

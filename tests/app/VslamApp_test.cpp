@@ -7,6 +7,7 @@
 #include <libvslam/obs/registerClasses.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
@@ -282,6 +283,48 @@ TEST(VslamApp, NanOdometryNamesTheEntry)
 	EXPECT_TRUE(contains(r.output, "entry 300")) << r.output;  // 2 objects per step
 	EXPECT_TRUE(contains(r.output, "not finite")) << r.output;
 	EXPECT_EQ(lineCount(dir.file("o/log_estimated_path.txt")), 150u);
+}
+
+// Found by fuzz_rawlog: bad data the filter itself detects came out of
+// MRPT's executeOn() wrapped in MRPT's exception type, so the run ended as
+// "other error" (exit 4) without naming the entry or writing its summary.
+TEST(VslamApp, BadMeasurementFoundByTheFilterIsAnInputErrorNamingTheEntry)
+{
+	TempDir dir;
+	{
+		mrpt::io::CFileGZOutputStream out(dir.file("rb.rawlog"));
+		auto arch = mrpt::serialization::archiveFrom(out);
+		for (int i = 0; i < 6; i++)
+		{
+			mrpt::obs::CActionCollection acts;
+			mrpt::obs::CActionRobotMovement2D mv;
+			mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0), {});
+			mv.timestamp = mrpt::Clock::fromDouble(1.7e9 + i);
+			acts.insert(mv);
+			mrpt::obs::CSensoryFrame sf;
+			auto br = mrpt::obs::CObservationBearingRange::Create();
+			br->timestamp = mv.timestamp;
+			br->sensorLabel = "RB";
+			br->sensor_std_range = 0.05f;
+			br->sensor_std_yaw = 0.02f;
+			mrpt::obs::CObservationBearingRange::TMeasurement m;
+			m.range = i == 4 ? 1e20f : 2.0f;
+			m.yaw = 0.1f;
+			m.pitch = 0;
+			m.landmarkID = 3;
+			br->sensedData.push_back(m);
+			sf.insert(br);
+			arch << acts << sf;
+		}
+	}
+	std::ofstream(dir.file("rb.ini")) << "[vslam]\nrawlog_file = " << dir.file("rb.rawlog") << "\n";
+	const auto r = runCommand(q(kVslam) + " " + q(dir.file("rb.ini")) + " --quiet --out " + q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 3) << r.output;
+	EXPECT_TRUE(contains(r.output, "entry 8")) << r.output;
+	EXPECT_TRUE(contains(r.output, "beyond any sensor")) << r.output;
+	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
+	EXPECT_TRUE(contains(summary, "status: failed")) << summary;
+	EXPECT_EQ(lineCount(dir.file("o/log_estimated_path.txt")), 4u);
 }
 
 TEST(VslamApp, UnparsableValueNamesSectionAndKey)

@@ -25,7 +25,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 		pf.m_options = options.pf.toMrpt();
 		vslam::RawlogStep step;
 		for (int n = 0; n < 2000 && reader.next(step); n++)
-			pf.executeOn(filter, step.action.get(), step.sf.get());
+		{
+			try
+			{
+				pf.executeOn(filter, step.action.get(), step.sf.get());
+			}
+			catch (const std::exception&)
+			{
+				// The app's rule: bad input found by the filter (wrapped by
+				// MRPT) is an input error; anything else is a finding.
+				if (filter.takeInputError().empty()) throw;
+				return 0;
+			}
+		}
 	}
 	catch (const vslam::InputError&)
 	{
