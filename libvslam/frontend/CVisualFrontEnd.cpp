@@ -139,11 +139,12 @@ void CVisualFrontEnd::prune(
 	if (m_options.max_landmarks > 0 &&
 		static_cast<int>(m_database.size() - remove.size()) > m_options.max_landmarks)
 	{
-		// Over the cap: the least recognized go first, then the oldest.
-		std::vector<std::pair<std::pair<int, double>, int64_t>> rank;
+		// Over the cap: the longest unseen go first (a new landmark counts as
+		// seen now), among equals the least recognized.
+		std::vector<std::pair<std::pair<double, int>, int64_t>> rank;
 		for (const auto& [id, lm] : m_database.landmarks())
 			if (std::find(remove.begin(), remove.end(), id) == remove.end())
-				rank.push_back({{lm.recognitions, lm.lastSeen}, id});
+				rank.push_back({{lm.lastSeen, lm.recognitions}, id});
 		std::sort(rank.begin(), rank.end());
 		const size_t excess = m_database.size() - remove.size() - static_cast<size_t>(m_options.max_landmarks);
 		for (size_t i = 0; i < excess; i++) remove.push_back(rank[i].second);

@@ -22,10 +22,10 @@ struct LapsResult
 	size_t images = 0, created = 0;
 	std::vector<double> translationErrors, headingErrors;
 	std::vector<std::string> rows;  //!< every output, for determinism
-	size_t landmarksInDatabase = 0;
+	size_t landmarksInDatabase = 0, pruned = 0;
 };
 
-LapsResult driveLaps(const TVisualFrontEndOptions& options, int laps)
+LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double blackoutAfterLaps = 1e9)
 {
 	vslam::testing::RoomRenderer room(5.0, 4.0, 2.5, 42);
 	mrpt::img::TCamera cam;
@@ -47,10 +47,13 @@ LapsResult driveLaps(const TVisualFrontEndOptions& options, int laps)
 		obs.sensorLabel = "CAMERA";
 		obs.cameraParams = cam;
 		obs.cameraPose = mount;
-		const cv::Mat img = room.render(cam, mrpt::poses::CPose3D(robot) + mount);
+		const bool blackout = k * step / (2 * M_PI * radius) >= blackoutAfterLaps;
+		const cv::Mat img = blackout ? cv::Mat(cam.nrows, cam.ncols, CV_8UC1, cv::Scalar(0))
+									 : room.render(cam, mrpt::poses::CPose3D(robot) + mount);
 		obs.image = mrpt::img::CImage(img, mrpt::img::DEEP_COPY);
 		const auto out = fe.process(obs, robot, "frame " + std::to_string(k));
 		run.images++;
+		run.pruned += out.pruned.size();
 		for (const auto& c : out.created)
 		{
 			frameOf[c->landmarkID] = robot;
@@ -104,4 +107,21 @@ TEST(CVisualFrontEnd, TheLandmarkCapBoundsTheMap)
 	const LapsResult run = driveLaps(o, 1);
 	EXPECT_LE(run.landmarksInDatabase, 3u);
 	EXPECT_GT(run.created, 3u);
+}
+
+TEST(CVisualFrontEnd, LandmarksExpectedButNotSeenArePruned)
+{
+	// A camera blackout on the second lap: every landmark is expected where
+	// it was made and missed there, so with prune_after_misses = 2 all go;
+	// without pruning they all stay.
+	TVisualFrontEndOptions o;
+	const LapsResult kept = driveLaps(o, 1.9, 1.0);
+	EXPECT_GE(kept.created, 4u);
+	EXPECT_EQ(kept.pruned, 0u);
+	EXPECT_EQ(kept.landmarksInDatabase, kept.created);
+	o.prune_after_misses = 2;
+	const LapsResult pruned = driveLaps(o, 1.9, 1.0);
+	EXPECT_EQ(pruned.created, kept.created);
+	EXPECT_EQ(pruned.landmarksInDatabase + pruned.pruned, pruned.created);
+	EXPECT_GE(pruned.pruned, pruned.created - 1);
 }
