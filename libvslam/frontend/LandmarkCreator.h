@@ -5,9 +5,11 @@
  * source of scale); the image geometry refines them: features are matched
  * across the views, the relative rotation comes from the essential matrix
  * between the first and last view, points are triangulated, then bundle
- * adjustment refines points and poses, the scale is reset to the odometry
- * baseline, and points that reproject badly, lie behind a camera, are seen
- * under too small an angle or too far away are dropped.
+ * adjustment refines points and poses with odometry as priors on the poses,
+ * the scale is reset to the odometry baseline, and points that reproject
+ * badly, lie behind a camera, are seen under too small an angle or too far
+ * away are dropped. All views are assumed to come from the same camera
+ * (the newest view's intrinsics are used).
  */
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
