@@ -21,7 +21,6 @@ void CLandmarkDatabase::rebuildIndex()
 {
 	m_store = Store();
 	m_store.bytes = m_searchCodec.kind() == DescriptorCodec::Kind::Projected;
-	m_store.step = m_store.bytes ? DescriptorCodec::decode(cv::Mat(1, 1, CV_8S, cv::Scalar(1))).at<float>(0) : 1.0f;
 	for (const auto& [id, lm] : m_landmarks) addToStore(id, DescriptorCodec::decode(lm.descriptors));
 	m_removedRows = 0;
 	m_index = std::make_unique<Index>(m_searchCodec.dims(), m_store, nanoflann::KDTreeSingleIndexAdaptorParams(10));

@@ -73,11 +73,11 @@ class CLandmarkDatabase
 		std::vector<int64_t> owner;
 		std::vector<cv::Mat> blocks;
 		bool bytes = true;
-		float step = 1;  //!< value of one byte
 		size_t kdtree_get_point_count() const { return rows.size(); }
 		float kdtree_get_pt(size_t i, size_t d) const
 		{
-			return bytes ? step * static_cast<const int8_t*>(rows[i])[d] : static_cast<const float*>(rows[i])[d];
+			return bytes ? DescriptorCodec::kProjectedStep * static_cast<const int8_t*>(rows[i])[d]
+						 : static_cast<const float*>(rows[i])[d];
 		}
 		template <class BBox>
 		bool kdtree_get_bbox(BBox&) const

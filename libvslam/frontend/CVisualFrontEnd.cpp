@@ -106,7 +106,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 				c->NViews = static_cast<uint32_t>(result.landmark->views);
 				c->sensorPoseOnRobot = obs.cameraPose;
 				out.created.push_back(c);
-				m_createdAt[result.landmark->id] = odometryPose;
+				result.landmark->createdAtOdometry = odometryPose;
 				m_database.insert(std::move(*result.landmark));
 				m_views.clear();
 			}
@@ -132,7 +132,7 @@ void CVisualFrontEnd::prune(
 		for (const auto& [id, lm] : m_database.landmarks())
 		{
 			if (std::find(recognized.begin(), recognized.end(), id) != recognized.end()) continue;
-			if (!expectedInView(m_createdAt[id], odometryPose)) continue;
+			if (!expectedInView(lm.createdAtOdometry, odometryPose)) continue;
 			auto* l = m_database.find(id);
 			if (++l->missesInARow >= m_options.prune_after_misses) remove.push_back(id);
 		}
@@ -152,7 +152,6 @@ void CVisualFrontEnd::prune(
 	for (int64_t id : remove)
 	{
 		m_database.remove(id);
-		m_createdAt.erase(id);
 		out.pruned.push_back(id);
 	}
 }

@@ -64,8 +64,6 @@ class CVisualFrontEnd
 	/** Recent unrecognized views for landmark creation, oldest first, with
 	 * the odometry pose each was taken at. */
 	std::deque<std::pair<CreationView, mrpt::poses::CPose2D>> m_views;
-	/** Odometry pose at each landmark's creation (for "expected in view"). */
-	std::map<int64_t, mrpt::poses::CPose2D> m_createdAt;
 	int64_t m_nextId = 1;
 	StageSeconds m_total;
 	size_t m_images = 0;

@@ -7,9 +7,6 @@ using namespace vslam;
 
 namespace
 {
-/** Quantization step of projected values (SIFT values reach ~160 and the
- * projection keeps norms: projected values stay within about +-250). */
-constexpr float kProjectedStep = 2.0f;
 constexpr uint32_t kProjectionSeed = 20050418;  // fixed: same codes everywhere
 }  // namespace
 

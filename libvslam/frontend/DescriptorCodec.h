@@ -40,6 +40,11 @@ class DescriptorCodec
 	int dims() const { return m_kind == Kind::Projected ? m_projection.rows : 128; }
 	size_t bytesPerDescriptor() const;
 
+	/** Value of one unit of a projected (signed byte) code. SIFT values
+	 * reach ~160 and the projection keeps norms, so projected values stay
+	 * within about +-250. */
+	static constexpr float kProjectedStep = 2.0f;
+
 	static Kind parse(const std::string& name);  //!< float | uint8 | projected
 	static const char* name(Kind kind);
 

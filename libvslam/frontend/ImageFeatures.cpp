@@ -28,11 +28,7 @@ ImageFeatures FeatureExtractor::extract(const cv::Mat& image, const ImageCalibra
 	m_sift->detectAndCompute(grey, cv::noArray(), keypoints, f.descriptors);
 	std::vector<cv::Point2f> raw;
 	raw.reserve(keypoints.size());
-	for (const auto& k : keypoints)
-	{
-		raw.push_back(k.pt);
-		f.scales.push_back(k.size);
-	}
+	for (const auto& k : keypoints) raw.push_back(k.pt);
 	f.pixels = calib.undistort(raw);
 	if (f.descriptors.empty()) f.descriptors = cv::Mat(0, 128, CV_32F);
 	return f;

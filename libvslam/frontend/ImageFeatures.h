@@ -17,7 +17,6 @@ struct ImageFeatures
 {
 	PinholeCamera camera;
 	std::vector<cv::Point2f> pixels;  //!< undistorted
-	std::vector<float> scales;  //!< keypoint size (for stats and point selection)
 	cv::Mat descriptors;  //!< N x 128, CV_32F
 	/** The descriptors in the landmark store's matching space (see
 	 * DescriptorCodec); empty: match the descriptors as they are. */

@@ -57,7 +57,6 @@ ImageFeatures view(const Scene& s, const mrpt::poses::CPose2D& robot, std::mt199
 		const cv::Point2d px = kCamera.project({x, y, z});
 		if (px.x < 0 || px.y < 0 || px.x >= 640 || px.y >= 480) continue;
 		f.pixels.emplace_back(static_cast<float>(px.x + pixelNoise * g(rng)), static_cast<float>(px.y + pixelNoise * g(rng)));
-		f.scales.push_back(4);
 		rows.push_back(static_cast<int>(i));
 	}
 	f.descriptors = cv::Mat(static_cast<int>(rows.size()), 128, CV_32F);

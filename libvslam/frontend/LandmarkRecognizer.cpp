@@ -8,14 +8,13 @@
 
 using namespace vslam;
 
-cv::Mat vslam::floatDescriptors(const cv::Mat& stored) { return DescriptorCodec::decode(stored); }
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& lm, const mrpt::poses::CPose3D& mount,
 	const TVisualFrontEndOptions& o)
 {
 	const cv::Mat& query = image.codes.empty() ? image.descriptors : image.codes;
-	const auto matches = matchDescriptors(query, floatDescriptors(lm.descriptors), o.match_ratio);
+	const auto matches = matchDescriptors(query, DescriptorCodec::decode(lm.descriptors), o.match_ratio);
 	if (static_cast<int>(matches.size()) < o.recognition_min_inliers) return std::nullopt;
 	std::vector<cv::Point3f> object;
 	std::vector<cv::Point2f> pixels;

@@ -33,7 +33,4 @@ struct VisualMeasurement
 std::optional<VisualMeasurement> recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& landmark,
 	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& options);
-
-/** A landmark's stored descriptors in the matching space (decoded). */
-cv::Mat floatDescriptors(const cv::Mat& stored);
 }  // namespace vslam

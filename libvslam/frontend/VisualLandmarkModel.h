@@ -4,6 +4,7 @@
  * landmark frame (the robot pose at creation: x forward, y left, z up),
  * their descriptors and bookkeeping. Not the images.
  */
+#include <mrpt/poses/CPose2D.h>
 #include <opencv2/core.hpp>
 
 #include <cstdint>
@@ -18,6 +19,8 @@ struct VisualLandmarkModel
 	/** One row per point: CV_32F (128 floats), or CV_8U when compact. */
 	cv::Mat descriptors;
 	double createdAt = 0;  //!< s
+	/** The robot's odometry pose when it was built (for "expected in view"). */
+	mrpt::poses::CPose2D createdAtOdometry;
 	int views = 0;  //!< images it was built from
 	double reprojectionRms = 0;  //!< px, after refinement at creation
 	int recognitions = 0;
