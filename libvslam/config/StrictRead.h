@@ -69,3 +69,15 @@ std::string rawValue(
 	const std::string& key);
 
 }  // namespace vslam::config
+
+namespace vslam::config
+{
+/** A whitespace-separated list of finite numbers ("1 2.5 -3"); the default
+ * if the key is absent. */
+std::vector<double> readNumberList(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, const std::vector<double>& defaultValue);
+
+/** The inverse of readNumberList, for saveToConfigFile. */
+std::string joinNumbers(const std::vector<double>& values);
+}  // namespace vslam::config

@@ -1,6 +1,7 @@
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <libvslam/sim/CMeasurementSimulator.h>
+#include <libvslam/sim/GoalDriver.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -38,64 +39,12 @@ double viewQuality(const Opt& o, const VisualLandmark& l, const se2::Pose& p)
 		(1 - logScale / std::max(std::log(o.max_scale_change), 1e-9));
 }
 
-/** Drives towards goals: turn in place when far off, else go and steer. */
-class GoalDriver
+/** Random goals keep the wall margin. */
+Eigen::Vector2d randomGoal(const Opt& o, mrpt::random::CRandomGenerator& rng)
 {
-   public:
-	GoalDriver(const Opt& o, mrpt::random::CRandomGenerator& rng) : m_o(o), m_rng(rng) {}
-
-	se2::Pose start()
-	{
-		if (m_o.path_type == Opt::PathType::Waypoints)
-		{
-			const se2::Pose p{m_o.waypoints[0], m_o.waypoints[1], 0};
-			m_next = 1;
-			m_goal = waypoint(m_next);
-			return {p.x, p.y, std::atan2(m_goal[1] - p.y, m_goal[0] - p.x)};
-		}
-		m_goal = randomGoal();
-		return {m_o.room_width / 2, m_o.room_height / 2, 0};
-	}
-
-	/** The true motion increment for one period from pose p. */
-	se2::Pose step(const se2::Pose& p)
-	{
-		if (std::hypot(m_goal[0] - p.x, m_goal[1] - p.y) < 0.1) nextGoal();
-		const double err =
-			se2::wrap(std::atan2(m_goal[1] - p.y, m_goal[0] - p.x) - p.phi);
-		const double maxTurn = m_o.max_turn_rate * m_o.dt;
-		const double turn = std::clamp(err, -maxTurn, maxTurn);
-		const double forward =
-			std::abs(err) > 0.5 ? 0.0 : m_o.speed * m_o.dt * std::cos(err);
-		return {forward, 0, turn};
-	}
-
-	Eigen::Vector2d randomGoal()
-	{
-		const double m = m_o.wall_margin;
-		return {m_rng.drawUniform(m, m_o.room_width - m),
-				m_rng.drawUniform(m, m_o.room_height - m)};
-	}
-
-   private:
-	const Opt& m_o;
-	mrpt::random::CRandomGenerator& m_rng;
-	Eigen::Vector2d m_goal;
-	size_t m_next = 0;
-
-	Eigen::Vector2d waypoint(size_t i) const
-	{
-		const size_t n = m_o.waypoints.size() / 2;
-		return {m_o.waypoints[2 * (i % n)], m_o.waypoints[2 * (i % n) + 1]};
-	}
-	void nextGoal()
-	{
-		if (m_o.path_type == Opt::PathType::Waypoints)
-			m_goal = waypoint(++m_next);
-		else
-			m_goal = randomGoal();
-	}
-};
+	const double m = o.wall_margin;
+	return {rng.drawUniform(m, o.room_width - m), rng.drawUniform(m, o.room_height - m)};
+}
 
 double gauss(mrpt::random::CRandomGenerator& rng, double std)
 {
@@ -107,7 +56,17 @@ SimulatedRun CMeasurementSimulator::run() const
 {
 	const Opt& o = m_options;
 	mrpt::random::CRandomGenerator rng(o.seed);
-	GoalDriver driver(o, rng);
+	size_t nextWaypoint = 0;
+	const auto waypoint = [&](size_t i) {
+		const size_t n = o.waypoints.size() / 2;
+		return Eigen::Vector2d(o.waypoints[2 * (i % n)], o.waypoints[2 * (i % n) + 1]);
+	};
+	DriveLimits limits;
+	limits.speed = o.speed, limits.maxTurnRate = o.max_turn_rate, limits.dt = o.dt;
+	GoalDriver driver(limits, [&](const se2::Pose&) {
+		return o.path_type == Opt::PathType::Waypoints ? waypoint(++nextWaypoint) : randomGoal(o, rng);
+	});
+	const TOdometryErrorModel odometry = o.odometryErrors();
 	SimulatedRun out;
 
 	std::vector<VisualLandmark> visual;
@@ -133,7 +92,18 @@ SimulatedRun CMeasurementSimulator::run() const
 	std::vector<double> kidnaps = o.kidnap_times;
 	std::sort(kidnaps.begin(), kidnaps.end());
 
-	se2::Pose pose = driver.start();
+	se2::Pose pose;
+	if (o.path_type == Opt::PathType::Waypoints)
+	{
+		driver.setGoal(waypoint(nextWaypoint = 1));
+		const Eigen::Vector2d p0 = waypoint(0), g = driver.goal();
+		pose = {p0[0], p0[1], std::atan2(g[1] - p0[1], g[0] - p0[0])};
+	}
+	else
+	{
+		driver.setGoal(randomGoal(o, rng));
+		pose = {o.room_width / 2, o.room_height / 2, 0};
+	}
 	for (size_t k = 1; k <= steps; k++)
 	{
 		SimulatedStep st;
@@ -143,17 +113,9 @@ SimulatedRun CMeasurementSimulator::run() const
 
 		// True motion and what odometry reports.
 		const se2::Pose u = driver.step(pose);
-		const double d = std::abs(u.x), a = std::abs(u.phi);
-		const double sT = o.odo_sigma_T * std::sqrt(d);
-		const double sR = std::sqrt(
-			o.odo_sigma_R * o.odo_sigma_R * a +
-			o.odo_sigma_R_per_meter * o.odo_sigma_R_per_meter * d);
-		st.odometryIncrement = {
-			u.x * (1 + o.odo_scale_bias) + gauss(rng, sT), gauss(rng, sT),
-			u.phi * (1 + o.odo_turn_bias) + gauss(rng, sR)};
+		st.odometryIncrement = odometry.measured(u, rng);
 		pose = se2::compose(pose, u);
-		if (o.slip_probability > 0 && rng.drawUniform(0, 1) < o.slip_probability)
-			pose = se2::compose(pose, {gauss(rng, o.slip_std), gauss(rng, o.slip_std), 0});
+		if (se2::Pose slip; odometry.slip(rng, slip)) pose = se2::compose(pose, slip);
 		pose.x = std::clamp(pose.x, 0.0, o.room_width);
 		pose.y = std::clamp(pose.y, 0.0, o.room_height);
 		if (recorded && nextKidnap < kidnaps.size() &&
@@ -163,7 +125,7 @@ SimulatedRun CMeasurementSimulator::run() const
 			se2::Pose to;
 			do
 			{
-				const Eigen::Vector2d g = driver.randomGoal();
+				const Eigen::Vector2d g = randomGoal(o, rng);
 				to = {g[0], g[1], rng.drawUniform(-M_PI, M_PI)};
 			} while (std::hypot(to.x - pose.x, to.y - pose.y) < o.kidnap_min_distance &&
 					 o.kidnap_min_distance <

@@ -10,37 +10,6 @@
 using namespace vslam;
 using namespace vslam::config;
 
-namespace
-{
-std::vector<double> readNumberList(
-	const mrpt::config::CConfigFileBase& c, const std::string& s,
-	const std::string& key, const std::vector<double>& def)
-{
-	if (!c.keyExists(s, key)) return def;
-	const std::string v = rawValue(c, s, key);
-	std::istringstream in(v);
-	std::vector<double> out;
-	std::string tok;
-	while (in >> tok)
-	{
-		char* end = nullptr;
-		const double d = std::strtod(tok.c_str(), &end);
-		if (*end != '\0' || !std::isfinite(d))
-			throw ConfigError(
-				"[" + s + "] " + key + " = '" + v + "': '" + tok +
-				"' is not a number");
-		out.push_back(d);
-	}
-	return out;
-}
-
-std::string joinNumbers(const std::vector<double>& v)
-{
-	std::ostringstream o;
-	for (size_t i = 0; i < v.size(); i++) o << (i ? " " : "") << v[i];
-	return o.str();
-}
-}  // namespace
 
 void TMeasurementSimOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)

@@ -6,6 +6,7 @@
  * with the paper's statistics, or range-bearing to point landmarks).
  */
 #include <libvslam/models/SE2.h>
+#include <libvslam/sim/OdometryErrorModel.h>
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <libvslam/config/Overrides.h>
@@ -86,6 +87,11 @@ struct TMeasurementSimOptions : public mrpt::config::CLoadableOptions
 	// free pose at least kidnap_min_distance away; odometry sees nothing.
 	std::vector<double> kidnap_times;
 	double kidnap_min_distance = 3.0;
+
+	TOdometryErrorModel odometryErrors() const
+	{
+		return {odo_sigma_T, odo_sigma_R, odo_sigma_R_per_meter, odo_scale_bias, odo_turn_bias, slip_probability, slip_std};
+	}
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& cfg,
