@@ -46,7 +46,11 @@ CameraRenderer::CameraRenderer(const mrpt::img::TCamera& camera) : m_camera(came
 			minU = std::min(minU, u), maxU = std::max(maxU, u), minV = std::min(minV, v), maxV = std::max(maxV, v);
 		}
 		const int left = static_cast<int>(std::ceil(-minU)) + 2, top = static_cast<int>(std::ceil(-minV)) + 2;
-		const int right = static_cast<int>(std::ceil(maxU - (W - 1))) + 2;
+		int right = static_cast<int>(std::ceil(maxU - (W - 1))) + 2;
+		// MRPT 2.5's CFBORender reads pixels with OpenGL's default 4-byte row
+		// alignment into a packed buffer: widths that are not a multiple of
+		// 4 overrun it. Pad the margin instead.
+		right += (4 - (W + left + right) % 4) % 4;
 		const int bottom = static_cast<int>(std::ceil(maxV - (H - 1))) + 2;
 		if (left + right > 2 * W || top + bottom > 2 * H)
 			throw InputError("camera distortion too strong to render (field of view over twice the undistorted one)");
@@ -63,6 +67,11 @@ CameraRenderer::CameraRenderer(const mrpt::img::TCamera& camera) : m_camera(came
 				m_mapX.at<float>(v, u) = static_cast<float>(m_idealCamera.fx() * n.x + m_idealCamera.cx());
 				m_mapY.at<float>(v, u) = static_cast<float>(m_idealCamera.fy() * n.y + m_idealCamera.cy());
 			}
+	}
+	else
+	{
+		// See above: pad to a multiple of 4 columns, cropped after rendering.
+		m_idealCamera.ncols = static_cast<uint32_t>(W + (4 - W % 4) % 4);
 	}
 	m_renderer = std::make_unique<mrpt::opengl::CFBORender>(
 		mrpt::opengl::CFBORender::Parameters(m_idealCamera.ncols, m_idealCamera.nrows));
@@ -81,7 +90,7 @@ cv::Mat CameraRenderer::render(const mrpt::opengl::COpenGLScene& scene, const mr
 	m_renderer->render_RGB(scene, rendered);
 	cv::Mat ideal = rendered.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
 	if (ideal.channels() == 1) cv::cvtColor(ideal, ideal, cv::COLOR_GRAY2BGR);
-	if (!m_distorted) return ideal.clone();
+	if (!m_distorted) return ideal.colRange(0, static_cast<int>(m_camera.ncols)).clone();
 	cv::Mat out;
 	cv::remap(ideal, out, m_mapX, m_mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
 	return out;
