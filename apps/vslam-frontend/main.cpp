@@ -8,6 +8,14 @@
  * filter can be tested and timed separately.
  *
  *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]
+ *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE]]
+ *
+ * With --ground-truth (TUM or rbpf-slam path of the robot, e.g. from
+ * vslam-simul), it also prints how right the measurements are: errors of
+ * all measurements and of those the pre-filter ([vslam_prefilter] of the
+ * INI) accepts, and the share of accepted ones beyond 3 sigma of
+ * [vslam_visual]'s Sigma_vis; --accuracy-csv writes every measurement
+ * with its truth.
  */
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
@@ -15,18 +23,58 @@
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
+#include <libvslam/eval/MeasurementAccuracy.h>
+#include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/obs/registerClasses.h>
 
 #include <chrono>
+#include <cstdio>
+#include <map>
 #include <iostream>
 
 namespace
 {
+void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
+	const std::map<int64_t, double>& creationTimes, const std::string& groundTruthFile, const std::string& iniFile,
+	const std::string& csvFile)
+{
+	using namespace vslam;
+	TVSlamFilterOptions filter;
+	if (!iniFile.empty()) filter.loadFromConfig(config::parseIniWithOverrides(config::readIniFile(iniFile), {}));
+	const auto a = evaluateMeasurements(
+		records, creationTimes, readTrajectory(groundTruthFile), filter.visual, filter.prefilter);
+	const auto row = [](const char* name, const MeasurementErrorStats& s) {
+		std::printf("vslam-frontend: %-9s %6zu  %10.3f m  %10.2f deg  %8.3f m  %8.2f deg  %5zu (%.2f%%)\n", name,
+			s.count, s.medianPosition, s.medianHeadingDeg, s.rmsPosition, s.rmsHeadingDeg, s.beyond3Sigma,
+			100 * s.shareBeyond3Sigma());
+	};
+	std::printf("vslam-frontend: accuracy against '%s' (%zu measurements, %zu without truth)\n",
+		groundTruthFile.c_str(), a.measurements, a.withoutTruth);
+	std::printf("vslam-frontend: %-9s %6s  %12s  %14s  %10s  %12s  %s\n", "", "count", "median pos", "median head",
+		"rms pos", "rms head", "beyond 3 sigma");
+	row("all", a.all);
+	row("accepted", a.accepted);
+	if (csvFile.empty()) return;
+	FILE* f = std::fopen(csvFile.c_str(), "wt");
+	if (!f) throw InputError("cannot create '" + csvFile + "'");
+	std::fprintf(f, "t,landmark,dx,dy,dphi_deg,true_dx,true_dy,true_dphi_deg,ProjErrRMS,NPoints,Slope,accepted,beyond_3_sigma\n");
+	for (const auto& e : a.errors)
+		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d\n", e.measurement.t,
+			static_cast<long long>(e.measurement.landmarkID), e.measurement.z.x, e.measurement.z.y,
+			e.measurement.z.phi * 180 / M_PI, e.expected.x, e.expected.y, e.expected.phi * 180 / M_PI,
+			e.measurement.ProjErrRMS, e.measurement.NPoints, e.measurement.Slope, e.accepted ? 1 : 0,
+			e.beyond3Sigma ? 1 : 0);
+	std::fclose(f);
+}
+
 const char* kUsage =
 	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]\n"
+	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE]]\n"
 	"       vslam-frontend --print-default-config\n";
 }
 
@@ -37,7 +85,7 @@ int main(int argc, const char** argv)
 	return vslam::runTool("vslam-frontend", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
-		std::string iniFile;
+		std::string iniFile, groundTruthFile, csvFile;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
@@ -51,12 +99,16 @@ int main(int argc, const char** argv)
 				std::cout << config::toIniText(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
 				return 0;
 			}
-			if ((a == "--set" || a == "--config") && i + 1 >= argc)
+			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv") && i + 1 >= argc)
 				throw std::invalid_argument(a + " needs a value");
 			if (a == "--set")
 				overrides.push_back(config::parseOverride(argv[++i]));
 			else if (a == "--config")
 				iniFile = argv[++i];
+			else if (a == "--ground-truth")
+				groundTruthFile = argv[++i];
+			else if (a == "--accuracy-csv")
+				csvFile = argv[++i];
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "'");
 			else
@@ -71,6 +123,8 @@ int main(int argc, const char** argv)
 		std::vector<ActionFramePair> steps;
 		mrpt::poses::CPose2D odometry;
 		ImagesToMeasurementsResult total;
+		std::vector<LandmarkMeasurementRecord> records;
+		std::map<int64_t, double> creationTimes;
 		RawlogStep step;
 		while (reader.next(step))
 		{
@@ -82,6 +136,14 @@ int main(int argc, const char** argv)
 			total.measurements += r.measurements;
 			total.created += r.created;
 			total.pruned += r.pruned;
+			for (const auto& o : *step.sf)
+			{
+				if (const auto* m = dynamic_cast<const CObservationVisualLandmark*>(o.get()))
+					records.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID,
+						{m->relPose.x(), m->relPose.y(), m->relPose.phi()}, m->ProjErrRMS, m->NPoints, m->Slope});
+				else if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
+					creationTimes[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
+			}
 			auto action = step.action ? step.action : mrpt::obs::CActionCollection::Create();
 			steps.emplace_back(action, step.sf);
 		}
@@ -99,6 +161,7 @@ int main(int argc, const char** argv)
 				  << "vslam-frontend: ms per image: features " << perImage(t.features) << ", search "
 				  << perImage(t.search) << ", pose " << perImage(t.pose) << ", creation "
 				  << perImage(t.creation) << "; total " << seconds << " s -> " << positional[1] << "\n";
+		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, iniFile, csvFile);
 		return 0;
 	});
 }

@@ -18,9 +18,7 @@
 #include <mrpt/system/CTicTac.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace
 {
@@ -64,15 +62,11 @@ int main(int argc, const char** argv)
 		}
 		if (positional.size() != 2) throw std::invalid_argument("expected CONFIG.ini OUTPUT.rawlog");
 		const std::string& ini = positional[0];
-		std::ifstream in(ini);
-		if (!in) throw ConfigError("cannot read configuration file '" + ini + "'");
-		std::stringstream text;
-		text << in.rdbuf();
+		const std::string text = config::readIniFile(ini);
 		TVisualSimOptions options;
 		try
 		{
-			options = loadVisualSimOptions(
-				text.str(), overrides, std::filesystem::path(ini).parent_path().string());
+			options = loadVisualSimOptions(text, overrides, std::filesystem::path(ini).parent_path().string());
 		}
 		catch (const ConfigError& e)
 		{

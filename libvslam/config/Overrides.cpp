@@ -1,6 +1,9 @@
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/Overrides.h>
 
+#include <fstream>
+#include <sstream>
+
 namespace vslam::config
 {
 namespace
@@ -65,4 +68,13 @@ mrpt::config::CConfigFileMemory vslam::config::parseIniWithOverrides(
 	cfg.getContent(content);
 	setContentOrThrowConfigError(cfg, content);
 	return cfg;
+}
+
+std::string vslam::config::readIniFile(const std::string& file)
+{
+	std::ifstream in(file);
+	if (!in) throw ConfigError("cannot read configuration file '" + file + "'");
+	std::stringstream text;
+	text << in.rdbuf();
+	return text.str();
 }

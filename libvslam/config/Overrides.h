@@ -26,6 +26,10 @@ void applyOverrides(
  * again, so keys written by overrides are seen like keys in the text.
  * Syntax errors, which MRPT throws as plain runtime errors, become
  * ConfigError. */
+/** The text of an INI file; ConfigError "cannot read configuration file"
+ * naming it if it cannot be read. */
+std::string readIniFile(const std::string& file);
+
 mrpt::config::CConfigFileMemory parseIniWithOverrides(
 	const std::string& iniText, const std::vector<Override>& overrides);
 

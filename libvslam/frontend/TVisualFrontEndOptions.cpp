@@ -105,15 +105,7 @@ void TVisualFrontEndOptions::saveToConfigFile(
 TVisualFrontEndOptions vslam::loadFrontEndOptions(
 	const std::string& iniFile, const std::vector<config::Override>& overrides)
 {
-	std::string text;
-	if (!iniFile.empty())
-	{
-		std::ifstream in(iniFile);
-		if (!in) throw ConfigError("cannot read configuration file '" + iniFile + "'");
-		std::stringstream buf;
-		buf << in.rdbuf();
-		text = buf.str();
-	}
+	const std::string text = iniFile.empty() ? std::string() : config::readIniFile(iniFile);
 	TVisualFrontEndOptions options;
 	try
 	{

@@ -1,0 +1,60 @@
+#pragma once
+/** \file MeasurementAccuracy.h
+ * How right the front-end's landmark measurements are, against a ground-
+ * truth robot path: a landmark's frame is the robot pose of the image it
+ * was created from, so a measurement of landmark L at time t should be
+ * truth(t_created(L)) seen from truth(t). Reports the errors of all
+ * measurements and of those the pre-filter accepts, and the share of
+ * accepted ones beyond 3 sigma of the filter's Sigma_vis in any component
+ * (the "false recognition" criterion), which a wrong landmark ID or a
+ * badly reconstructed landmark produces.
+ */
+#include <libvslam/eval/Trajectory.h>
+#include <libvslam/filter/CMeasurementExtractor.h>
+#include <libvslam/filter/CPreFilter.h>
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace vslam
+{
+struct LandmarkMeasurementRecord
+{
+	double t = 0;  //!< UNIX s
+	int64_t landmarkID = -1;
+	se2::Pose z;  //!< measured landmark pose in the robot frame
+	double ProjErrRMS = 0;
+	uint32_t NPoints = 0;
+	double Slope = 0;
+};
+
+struct MeasurementErrorStats
+{
+	size_t count = 0;
+	double medianPosition = 0, medianHeadingDeg = 0;  //!< |error|
+	double rmsPosition = 0, rmsHeadingDeg = 0;
+	size_t beyond3Sigma = 0;  //!< any component beyond 3 sigma
+	double shareBeyond3Sigma() const { return count ? double(beyond3Sigma) / count : 0.0; }
+};
+
+struct MeasurementError
+{
+	LandmarkMeasurementRecord measurement;
+	se2::Pose expected;  //!< the truth
+	Eigen::Vector3d error;  //!< measured - expected (x, y, phi)
+	bool accepted = false;  //!< by the pre-filter
+	bool beyond3Sigma = false;
+};
+
+struct MeasurementAccuracy
+{
+	size_t measurements = 0, withoutTruth = 0;
+	MeasurementErrorStats all, accepted;
+	std::vector<MeasurementError> errors;  //!< those with truth, in input order
+};
+
+MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRecord>& measurements,
+	const std::map<int64_t, double>& creationTimes, const Trajectory& truth,
+	const CMeasurementExtractor::TVisualOptions& sigma, const CPreFilter::TOptions& prefilter);
+}  // namespace vslam
