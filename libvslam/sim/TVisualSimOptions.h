@@ -29,7 +29,7 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	/** World file (FloorPlanFile.h); relative paths are relative to the INI. */
 	std::string world_file;
 	/** Folder of the photographs named in the world file. */
-	std::string texture_dir = "/usr/share/backgrounds/mate";
+	std::string texture_dir = "/usr/share";
 	int texture_max_side = 2048;  //!< px, longest side of one surface's texture
 	double duration = 120;  //!< s
 	double dt = 0.2;  //!< s, one rawlog entry (odometry + laser) per step
