@@ -5,7 +5,9 @@
 #include <libvslam/config/IniText.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/config/KeyValidation.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
+#include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <filesystem>
@@ -107,6 +109,7 @@ TEST(ConfigFiles, SimulatorIniFilesListKnownKeysOnly)
 		if (e.path().filename().string().rfind("simul_", 0) != 0) continue;
 		SCOPED_TRACE(e.path().filename().string());
 		const auto ini = readIni(e.path());
+		if (!ini.sectionExists(TMeasurementSimOptions::kSection)) continue;  // vslam-simul's
 		EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known, TMeasurementSimOptions::kSection));
 		TMeasurementSimOptions o;
 		EXPECT_NO_THROW(o.loadFromConfigFile(ini, TMeasurementSimOptions::kSection));
@@ -135,4 +138,34 @@ TEST(ConfigFiles, FrontEndIniFilesListKnownKeysOnlyAndTheExampleShowsTheDefaults
 		checked++;
 	}
 	EXPECT_GE(checked, 2u);
+}
+
+TEST(ConfigFiles, RenderedSimulatorIniFilesLoadAndTheExampleShowsTheDefaults)
+{
+	const std::string section = TVisualSimOptions::kSection;
+	config::KnownKeys known;
+	known.addFromOptions(TVisualSimOptions(), section);
+	const auto example = readIni(kConfigDir / "simul_example.ini");
+	for (const auto& key : known.keys(section)) EXPECT_TRUE(example.keyExists(section, key)) << key;
+	TVisualSimOptions fromExample;
+	fromExample.loadFromConfigFile(example, section);
+	fromExample.world_file.clear();  // the one key without a default
+	EXPECT_EQ(config::toIniText(fromExample, section), config::toIniText(TVisualSimOptions(), section));
+	size_t checked = 0;
+	for (const auto& e : fs::directory_iterator(kConfigDir))
+	{
+		if (e.path().extension() != ".ini" || !readIni(e.path()).sectionExists(section)) continue;
+		SCOPED_TRACE(e.path().filename().string());
+		std::ifstream in(e.path());
+		std::stringstream text;
+		text << in.rdbuf();
+		// The options load, and the world file and the path or people in it
+		// are valid (textures exist, waypoints are collision-free).
+		TVisualSimOptions o;
+		ASSERT_NO_THROW(o = loadVisualSimOptions(text.str(), {}, kConfigDir.string()));
+		const auto plan = world::loadFloorPlan(o.world_file, o.texture_dir);
+		EXPECT_NO_THROW(CVisualSimulator(o, plan));
+		checked++;
+	}
+	EXPECT_GE(checked, 6u);
 }

@@ -43,7 +43,7 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	 * starts at the first point facing the second. */
 	std::vector<double> waypoints;
 	/** "x y phi_deg": start of a random path. */
-	std::vector<double> start_pose{1, 1, 0};
+	std::vector<double> start_pose{2, 1, 0};
 
 	TOdometryErrorModel odometry;
 
