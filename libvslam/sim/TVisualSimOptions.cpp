@@ -95,7 +95,10 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	odometry.slip_std = readDouble(c, s, "slip_std", odometry.slip_std, Range::closed(0, 10));
 
 	camera_rate = readDouble(c, s, "camera_rate", camera_rate, {0, 100, false, true});
-	if (camera_rate * dt > 1.0 + 1e-9) throw ConfigError("[" + s + "] camera_rate: at most one frame per step (1/dt)");
+	const double stepsPerFrame = 1.0 / (camera_rate * dt);
+	if (stepsPerFrame < 1 - 1e-6 || std::abs(stepsPerFrame - std::round(stepsPerFrame)) > 1e-6)
+		throw ConfigError("[" + s + "] camera_rate: one frame every whole number of steps is needed (1 / (camera_rate * dt) = " +
+			std::to_string(stepsPerFrame) + ")");
 	camera.ncols = static_cast<uint32_t>(readInt(c, s, "camera_ncols", camera.ncols, Range::closed(16, 4096)));
 	camera.nrows = static_cast<uint32_t>(readInt(c, s, "camera_nrows", camera.nrows, Range::closed(16, 4096)));
 	camera.fx(readDouble(c, s, "camera_fx", camera.fx(), {1, 1e5, true, true}));

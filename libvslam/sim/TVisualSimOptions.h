@@ -48,7 +48,7 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	TOdometryErrorModel odometry;
 
 	// Camera
-	double camera_rate = 2;  //!< frames per second (a multiple of dt)
+	double camera_rate = 2.5;  //!< frames per second; 1 / (camera_rate dt) a whole number
 	mrpt::img::TCamera camera;  //!< calibration written into every image
 	/** Camera on the robot: x y z (m) yaw pitch roll (deg); all angles 0
 	 * looks straight ahead along the robot's x axis. */
