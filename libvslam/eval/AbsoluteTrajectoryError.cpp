@@ -62,6 +62,7 @@ AteStats computeAte(
 		t = mg - Eigen::Vector2d(std::cos(theta) * me.x() - std::sin(theta) * me.y(),
 								 std::sin(theta) * me.x() + std::cos(theta) * me.y());
 	}
+	s.alignment = {t.x(), t.y(), theta};
 	const double c = std::cos(theta), sn = std::sin(theta);
 	double sum2 = 0, sum = 0, head2 = 0;
 	for (size_t i = 0; i < est.size(); i++)

@@ -18,6 +18,9 @@ struct AteStats
 	double rmse = 0, mean = 0, median = 0, max = 0;
 	double headingRmse = 0;  //!< rad
 	std::vector<double> errors;  //!< per associated pose, in time order
+	/** The SE(2) transform applied to the estimate (identity unless
+	 * aligned): estimate pose p is compared as compose(alignment, p). */
+	se2::Pose alignment{0, 0, 0};
 };
 
 struct AteOptions
