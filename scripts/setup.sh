@@ -2,7 +2,9 @@
 # vslam set-up on Debian 12: installs the Debian packages the project needs
 # (idempotent), builds, then runs the main job or the tests.
 #
-#   scripts/setup.sh demo     install, build, run vslam on the shipped demo rawlog
+#   scripts/setup.sh demo     install, build, render the demo rawlog with
+#                             vslam-simul, run the full visual vslam on it,
+#                             plot the paths (outputs in vslam_out_demo/)
 #   scripts/setup.sh test     install, build, run every test (ctest), then
 #                             build again with ASan + UBSan and run every
 #                             test under the sanitizers (any report fails)
@@ -28,10 +30,15 @@ case "$MODE" in demo | test | build) ;; *) usage ;; esac
 
 # Debian 12 packages: compiler and build tools, MRPT 2.5.8 (libraries, the
 # apps rawlog-edit / kf-slam / rbpf-slam, and mrpt-common's demo datasets),
-# OpenCV 4.6, Eigen 3.4, nanoflann, GoogleTest, Google Benchmark, zlib.
+# OpenCV 4.6, Eigen 3.4, nanoflann, GoogleTest, Google Benchmark, zlib;
+# Mesa's EGL and software rasterizer (vslam-simul renders headless through
+# MRPT's CFBORender); photographs for the simulated worlds' textures
+# (licences in doc/textures.md).
 PACKAGES=(
   g++ make cmake pkg-config
   libmrpt-dev mrpt-apps mrpt-common
+  libegl1 libegl-mesa0 libgl1-mesa-dri libgbm1
+  mate-backgrounds plasma-workspace-wallpapers
   libopencv-dev libeigen3-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev
@@ -71,9 +78,18 @@ build
 case "$MODE" in
   demo)
     cd "$ROOT"
-    echo "[setup] running: build/bin/vslam config_ini/demo_visual.ini"
-    "$BUILD/bin/vslam" config_ini/demo_visual.ini
-    echo "[setup] outputs in $ROOT/vslam_out_demo/ (run_summary.yaml, log_estimated_path.txt, final_map.txt, ...)"
+    echo "[setup] rendering the demo rawlog: build/bin/vslam-simul config_ini/simul_demo.ini rawlogs/demo_rendered.rawlog"
+    "$BUILD/bin/vslam-simul" config_ini/simul_demo.ini rawlogs/demo_rendered.rawlog --quiet
+    echo "[setup] running: build/bin/vslam config_ini/demo_rendered.ini"
+    "$BUILD/bin/vslam" config_ini/demo_rendered.ini
+    "$BUILD/bin/vslam-eval" vslam_out_demo/estimated_path.tum rawlogs/demo_rendered_groundtruth.tum \
+      --odometry rawlogs/demo_rendered_odometry.tum --world config_ini/worlds/living_room.world \
+      --plot vslam_out_demo/paths.png > /dev/null
+    cp rawlogs/demo_rendered_preview.png vslam_out_demo/simulation_preview.png
+    echo "[setup] outputs in $ROOT/vslam_out_demo/: run_summary.yaml (errors against the ground truth),"
+    echo "[setup]   estimated_path.tum, log_estimated_path.txt, final_map.txt, paths.png (estimate, truth,"
+    echo "[setup]   odometry over the floor plan), simulation_preview.png; the rendered rawlog and its"
+    echo "[setup]   images are in rawlogs/demo_rendered.rawlog and rawlogs/demo_rendered_Images/"
     ;;
   test)
     echo "[setup] running all tests"
