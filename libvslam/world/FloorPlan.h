@@ -13,11 +13,14 @@
 namespace vslam::world
 {
 /** A photograph (file) and the part of it used, as fractions of its width
- * and height: "nature/Wood.jpg@0,0,0.5,1" is its left half. */
+ * and height: "nature/Wood.jpg@0,0,0.5,1" is its left half; a trailing
+ * "~" mirrors it left-right (SIFT descriptors of a mirrored image do not
+ * match the original's, so a mirrored part counts as new content). */
 struct TextureRef
 {
 	std::string file;  //!< absolute path, checked to exist when parsed
 	double u0 = 0, v0 = 0, u1 = 1, v1 = 1;
+	bool mirrored = false;
 };
 
 /** A 2-D segment of an obstacle's outline, with where it was defined. */

@@ -64,6 +64,7 @@ class LineParser
 	{
 		std::string spec = m_fields.at(i);
 		TextureRef t;
+		if (!spec.empty() && spec.back() == '~') t.mirrored = true, spec.pop_back();
 		const auto at = spec.find('@');
 		if (at != std::string::npos)
 		{

@@ -11,7 +11,8 @@
  *     door    X1 Y1 X2 Y2 TEXTURE
  *
  * TEXTURE is a photograph, relative to the texture folder (or absolute),
- * optionally followed by "@U0,V0,U1,V1": the part of it used, as fractions.
+ * optionally followed by "@U0,V0,U1,V1": the part of it used, as fractions,
+ * and by "~": mirrored left-right.
  * Any error (unknown item, wrong field count, bad number, missing texture
  * file, degenerate geometry, a world without walls) is an InputError naming
  * the file and line.

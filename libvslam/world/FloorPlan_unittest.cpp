@@ -31,7 +31,7 @@ const char* kRoom =
 	"wall 0 0 4 0 0.1 photo.jpg\n"
 	"wall 4 0 4 3 0.1 photo.jpg@0,0,0.5,1\n"
 	"wall 4 3 0 3 0.1 photo.jpg\n"
-	"wall 0 3 0 0 0.1 photo.jpg photo.jpg\n"
+	"wall 0 3 0 0 0.1 photo.jpg photo.jpg@0.5,0,1,1~\n"
 	"box 3 2 0 1 0.5 0.8 photo.jpg\n"
 	"picture 1 2.95 2 2.95 1.2 1.8 photo.jpg\n";
 
@@ -57,6 +57,9 @@ TEST(FloorPlanFile, ParsesEveryItem)
 	EXPECT_EQ(p.walls[1].line, 5);
 	EXPECT_DOUBLE_EQ(p.walls[1].front.u1, 0.5);
 	EXPECT_TRUE(p.walls[3].hasBack);
+	EXPECT_FALSE(p.walls[3].front.mirrored);
+	EXPECT_TRUE(p.walls[3].back.mirrored);
+	EXPECT_DOUBLE_EQ(p.walls[3].back.u0, 0.5);
 	ASSERT_EQ(p.boxes.size(), 1u);
 	EXPECT_DOUBLE_EQ(p.boxes[0].height, 0.8);
 	EXPECT_EQ(p.pictures.size(), 1u);

@@ -134,7 +134,7 @@ cv::Mat WorldScene::surfaceImage(const TextureRef& t, double width, double heigh
 		cv::resize(crop, out, cv::Size(), scale, scale, cv::INTER_AREA);
 	else
 		out = crop.clone();
-	cv::flip(out, out, 0);  // image row 0 is the plane's bottom edge
+	cv::flip(out, out, t.mirrored ? -1 : 0);  // image row 0 is the plane's bottom edge
 	return out;
 }
 

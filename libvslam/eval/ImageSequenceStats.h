@@ -1,0 +1,42 @@
+#pragma once
+/** \file ImageSequenceStats.h
+ * Is an image sequence good for the visual front-end? SIFT features per
+ * image, and matches (Lowe's ratio test, then the inliers of a RANSAC
+ * fundamental matrix) between consecutive images and at revisits: pairs
+ * of images taken at least `revisitMinSeconds` apart from nearly the same
+ * true pose. Used on vslam-simul's rendered rawlogs (vslam-image-stats).
+ */
+#include <libvslam/eval/Trajectory.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
+
+#include <string>
+
+namespace vslam
+{
+struct ImageSequenceStatsOptions
+{
+	double revisitMinSeconds = 30;
+	double revisitMaxDistance = 0.3;  //!< m between the true poses
+	double revisitMaxAngle = 15 * M_PI / 180;  //!< rad
+};
+
+struct MatchStats
+{
+	size_t pairs = 0;
+	double medianMatches = 0, medianInliers = 0;
+	size_t pairsWithUnder20Inliers = 0;
+};
+
+struct ImageSequenceStats
+{
+	size_t images = 0;
+	double minFeatures = 0, medianFeatures = 0;
+	size_t imagesUnder100Features = 0;
+	MatchStats consecutive, revisits;
+};
+
+/** Reads the camera images of a rawlog (either format) and the true robot
+ * path (for the revisits). Throws InputError naming the file or entry. */
+ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, const Trajectory& truth,
+	const TVisualFrontEndOptions& frontEnd, const ImageSequenceStatsOptions& options = {});
+}  // namespace vslam
