@@ -13,7 +13,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_PER_TARGET="${1:-60}"
-TARGETS="${2:-fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map fuzz_frontend}"
+TARGETS="${2:-fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map fuzz_frontend fuzz_scenario}"
 BUILD="$ROOT/build-fuzz"
 BIN="$ROOT/build/bin"
 
@@ -32,7 +32,7 @@ cmake --build "$BUILD" -j "$(nproc)" --target $TARGETS > "$BUILD/build.log" ||
 
 # Seed corpora from real files.
 SEEDS="$BUILD/seeds"
-rm -rf "$SEEDS" && mkdir -p "$SEEDS"/{fuzz_rawlog,fuzz_observations,fuzz_config,fuzz_mrclam,fuzz_landmark_map,fuzz_frontend}
+rm -rf "$SEEDS" && mkdir -p "$SEEDS"/{fuzz_rawlog,fuzz_observations,fuzz_config,fuzz_mrclam,fuzz_landmark_map,fuzz_frontend,fuzz_scenario}
 for ini in simul_demo_visual simul_range_bearing; do
   "$BIN/vslam-simul-measurements" "$ROOT/config_ini/$ini.ini" "$SEEDS/$ini.rawlog" \
     --set vslam_sim.duration=15 --set vslam_sim.mapping_duration=0 --set vslam_sim.kidnap_times= > /dev/null
@@ -62,6 +62,10 @@ if [[ -d "$MRCLAM" ]]; then
   done > "$SEEDS/fuzz_mrclam/d6_r1_head.txt"
 fi
 cp "$ROOT"/tests/fuzz/seeds/mrclam/* "$SEEDS/fuzz_mrclam/"
+for ini in "$ROOT"/config_ini/simul_{example,demo,living_room,apartment,kidnap,dynamic}.ini; do
+  world="$ROOT/config_ini/$(grep -m1 '^world_file' "$ini" | sed 's/.*= *//')"
+  { cat "$ini"; printf '%%%%%%%%\n'; cat "$world"; } > "$SEEDS/fuzz_scenario/$(basename "$ini" .ini).txt"
+done
 
 # Fork mode: a finding is saved and counted, and fuzzing goes on for the
 # whole time (a run that stopped at the first finding would say nothing of

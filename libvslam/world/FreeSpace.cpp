@@ -39,13 +39,37 @@ FreeSpace::FreeSpace(const FloorPlan& plan, double robotRadius, const Eigen::Vec
 	m_origin = lo - Eigen::Vector2d(1, 1);
 	const int cols = static_cast<int>(std::ceil((hi[0] - lo[0] + 2) / m_res));
 	const int rows = static_cast<int>(std::ceil((hi[1] - lo[1] + 2) / m_res));
-	if (static_cast<double>(cols) * rows > 4e7)
-		throw InputError("world file '" + plan.sourceFile + "': the world is too large (over 10 km^2 at 5 cm)");
+	if (static_cast<double>(cols) * rows > 1e7)
+		throw InputError("world file '" + plan.sourceFile + "': the world is too large (over 25,000 m^2 at 5 cm)");
+	// Clearance of every cell centre by a distance transform of the
+	// rasterized obstacles (linear in the cells, whatever the number of
+	// obstacles); exact distances are used for single queries (isFree).
+	cv::Mat obstacles(rows, cols, CV_8U, cv::Scalar(255));
+	const auto cell = [&](const Eigen::Vector2d& p) {
+		return cv::Point(static_cast<int>(std::floor((p[0] - m_origin[0]) / m_res)),
+			static_cast<int>(std::floor((p[1] - m_origin[1]) / m_res)));
+	};
+	for (const Segment& s : m_segments) cv::line(obstacles, cell(s.a), cell(s.b), cv::Scalar(0), 1, cv::LINE_8);
+	for (const auto& solid : m_solids)
+	{
+		std::vector<cv::Point> pts;
+		for (const auto& c : solid) pts.push_back(cell(c));
+		cv::fillConvexPoly(obstacles, pts, cv::Scalar(0));
+	}
+	cv::Mat distance;
+	cv::distanceTransform(obstacles, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+	// The rasterized distance is within a cell diagonal of the exact one:
+	// cells near the limit get the exact clearance.
 	cv::Mat freeCells(rows, cols, CV_8U, cv::Scalar(0));
 	for (int r = 0; r < rows; r++)
 		for (int c = 0; c < cols; c++)
-			if (clearance(m_origin + Eigen::Vector2d((c + 0.5) * m_res, (r + 0.5) * m_res)) >= m_radius)
+		{
+			const double d = distance.at<float>(r, c) * m_res;
+			if (d >= m_radius + 1.5 * m_res ||
+				(d > m_radius - 1.5 * m_res &&
+					clearance(m_origin + Eigen::Vector2d((c + 0.5) * m_res, (r + 0.5) * m_res)) >= m_radius))
 				freeCells.at<uchar>(r, c) = 255;
+		}
 	m_reachable = freeCells;  // cellOf() reads the grid size
 	int sr = 0, sc = 0;
 	if (!cellOf(start, sr, sc) || !freeCells.at<uchar>(sr, sc))
