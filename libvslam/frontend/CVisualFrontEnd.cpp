@@ -60,6 +60,13 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		lm->missesInARow = 0;
 		lm->lastSeen = view.time;
 		recognized.push_back(c.id);
+		// Recognized (no new landmark here), but measured too poorly to report.
+		if ((m_options.recognition_max_std_xy > 0 && m->stdPosition > m_options.recognition_max_std_xy) ||
+			(m_options.recognition_max_std_phi > 0 && m->stdHeading > m_options.recognition_max_std_phi))
+		{
+			m_poorlyConditioned++;
+			continue;
+		}
 		auto o = CObservationVisualLandmark::Create();
 		o->timestamp = obs.timestamp;
 		o->sensorLabel = obs.sensorLabel;

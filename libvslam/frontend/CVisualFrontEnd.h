@@ -54,6 +54,9 @@ class CVisualFrontEnd
 	/** Totals over all images so far. */
 	const StageSeconds& totalSeconds() const { return m_total; }
 	size_t imagesProcessed() const { return m_images; }
+	/** Recognitions dropped for their predicted uncertainty
+	 * (recognition_max_std_xy / _phi). */
+	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
 
    private:
 	void prune(const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out);
@@ -67,5 +70,6 @@ class CVisualFrontEnd
 	int64_t m_nextId = 1;
 	StageSeconds m_total;
 	size_t m_images = 0;
+	size_t m_poorlyConditioned = 0;
 };
 }  // namespace vslam

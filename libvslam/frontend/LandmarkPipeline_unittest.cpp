@@ -229,3 +229,63 @@ TEST(ImageCalibration, UnusableCalibrationsAreErrorsNamingTheImage)
 	o.cy = 240;
 	EXPECT_NEAR(ImageCalibration::from(none, 640, 480, o, "x").camera.fx, 500, 0);
 }
+
+namespace
+{
+/** An exact landmark (no pixel noise at creation) of `scene`, recognized
+ * `trials` times from `query` with pixel noise: the empirical standard
+ * deviations of the position and heading errors, and the mean predicted
+ * ones. */
+std::array<double, 4> predictedAgainstEmpirical(const Scene& scene, const mrpt::poses::CPose2D& query, int trials)
+{
+	std::mt19937 rng(11);
+	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
+	std::vector<CreationView> views;
+	for (size_t i = 0; i < path.size(); i++) views.push_back(creationView(view(scene, path[i], rng, 0.0), path[i], i));
+	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, TVisualFrontEndOptions());
+	EXPECT_TRUE(created.landmark) << created.why;
+	if (!created.landmark) return {0, 0, 0, 0};
+	const mrpt::poses::CPose2D truth = path.back() - query;
+	double sx2 = 0, sh2 = 0, predX = 0, predH = 0;
+	int n = 0;
+	for (int k = 0; k < trials; k++)
+	{
+		const auto m = recognizeLandmark(view(scene, query, rng, 0.5), *created.landmark, kMount, TVisualFrontEndOptions());
+		if (!m) continue;
+		const double ex = m->landmarkInRobot.x() - truth.x(), ey = m->landmarkInRobot.y() - truth.y();
+		sx2 += ex * ex + ey * ey;
+		sh2 += std::pow(mrpt::math::wrapToPi<double>(m->landmarkInRobot.phi() - truth.phi()), 2);
+		predX += m->stdPosition, predH += m->stdHeading;
+		n++;
+	}
+	EXPECT_GE(n, trials * 9 / 10);
+	// Position: the RMS of the 2-D error against the largest axis std
+	// (they agree within sqrt(2) whatever the shape of the error ellipse).
+	return {std::sqrt(sx2 / n), predX / n, std::sqrt(sh2 / n), predH / n};
+}
+}  // namespace
+
+TEST(LandmarkRecognizer, PredictedUncertaintyMatchesTheScatterAndGrowsForASmallPatch)
+{
+	std::mt19937 rng(12);
+	const Scene wide = makeScene(rng, 300);
+	const mrpt::poses::CPose2D query(1.2, 0.3, -5 * kDeg);
+	const auto w = predictedAgainstEmpirical(wide, query, 150);
+	EXPECT_GT(w[1], w[0] / std::sqrt(2.0) * 0.7);
+	EXPECT_LT(w[1], w[0] * 1.5);
+	EXPECT_GT(w[3], 0.7 * w[2]);
+	EXPECT_LT(w[3], 1.5 * w[2]);
+
+	// The same number of points on a 1 m x 0.5 m patch: worse geometry,
+	// larger predicted (and actual) heading uncertainty.
+	Scene patch = wide;
+	for (auto& p : patch.points) p = cv::Point3d(4.5 + 0.25 * (p.x - 4.5), 0.25 * p.y, 1.0 + 0.25 * (p.z - 1.2));
+	const auto s = predictedAgainstEmpirical(patch, query, 150);
+	std::printf("position rms / predicted std: wide %.4f / %.4f m, patch %.4f / %.4f m\n"
+				"heading rms / predicted std: wide %.3f / %.3f deg, patch %.3f / %.3f deg\n",
+		w[0], w[1], s[0], s[1], w[2] / kDeg, w[3] / kDeg, s[2] / kDeg, s[3] / kDeg);
+	EXPECT_GT(s[3], 2 * w[3]);
+	EXPECT_GT(s[2], 2 * w[2]);
+	EXPECT_GT(s[3], 0.7 * s[2]);
+	EXPECT_LT(s[3], 1.5 * s[2]);
+}

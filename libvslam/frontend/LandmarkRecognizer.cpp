@@ -1,13 +1,42 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Dense>
 #include <opencv2/calib3d.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace vslam;
 
+namespace
+{
+/** The measurement (landmark in the robot frame, robot in the landmark
+ * frame, Slope) of a PnP solution X_cam = R(rvec) X_landmark + tvec. */
+VisualMeasurement measurementFromPnP(const cv::Mat& rvec, const cv::Mat& tvec, const mrpt::poses::CPose3D& mount)
+{
+	cv::Mat Rcv;
+	cv::Rodrigues(rvec, Rcv);
+	mrpt::math::CMatrixDouble44 T = mrpt::math::CMatrixDouble44::Identity();
+	for (int r = 0; r < 3; r++)
+	{
+		for (int c = 0; c < 3; c++) T(r, c) = Rcv.at<double>(r, c);
+		T(r, 3) = tvec.at<double>(r);
+	}
+	const mrpt::poses::CPose3D landmarkToCamera(T);
+	const mrpt::poses::CPose3D cameraInLandmark = mrpt::poses::CPose3D() - landmarkToCamera;
+	VisualMeasurement m;
+	m.robotInLandmark = cameraInLandmark + (mrpt::poses::CPose3D() - mount);
+	const auto Rr = m.robotInLandmark.getRotationMatrix();
+	m.Slope = std::acos(std::clamp(Rr(2, 2), -1.0, 1.0));
+	const mrpt::poses::CPose2D robotPlanar(m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw());
+	m.landmarkInRobot = mrpt::poses::CPose2D() - robotPlanar;
+	return m;
+}
+}  // namespace
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const ImageFeatures& image, const VisualLandmarkModel& lm, const mrpt::poses::CPose3D& mount,
@@ -52,28 +81,59 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 			n++;
 		}
 	}
-	if (n < o.recognition_min_inliers) return std::nullopt;
+	if (n < o.recognition_min_inliers || n < o.recognition_min_inlier_ratio * static_cast<double>(matches.size()))
+		return std::nullopt;
 
-	// X_cam = R X_landmark + t  ->  camera in the landmark frame -> robot.
-	cv::Mat Rcv;
-	cv::Rodrigues(rvec, Rcv);
-	mrpt::math::CMatrixDouble44 T = mrpt::math::CMatrixDouble44::Identity();
-	for (int r = 0; r < 3; r++)
-	{
-		for (int c = 0; c < 3; c++) T(r, c) = Rcv.at<double>(r, c);
-		T(r, 3) = tvec.at<double>(r);
-	}
-	const mrpt::poses::CPose3D landmarkToCamera(T);
-	const mrpt::poses::CPose3D cameraInLandmark = mrpt::poses::CPose3D() - landmarkToCamera;
-	VisualMeasurement m;
+	VisualMeasurement m = measurementFromPnP(rvec, tvec, mount);
 	m.landmarkID = lm.id;
-	m.robotInLandmark = cameraInLandmark + (mrpt::poses::CPose3D() - mount);
-	const auto Rr = m.robotInLandmark.getRotationMatrix();
-	m.Slope = std::acos(std::clamp(Rr(2, 2), -1.0, 1.0));
-	const mrpt::poses::CPose2D robotPlanar(m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw());
-	m.landmarkInRobot = mrpt::poses::CPose2D() - robotPlanar;
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(sq / n);
 	m.matches = static_cast<int>(matches.size());
+
+	// Predicted uncertainty: pose covariance sigma^2 (J^T J)^-1 of the
+	// inliers' reprojection (sigma: their RMS error, at least 0.5 px),
+	// carried to (dx, dy, dtheta) by a numerical Jacobian.
+	std::vector<cv::Point3f> inlierObject;
+	for (size_t i = 0; i < object.size(); i++)
+	{
+		const double e2 = std::pow(projected[i].x - pixels[i].x, 2) + std::pow(projected[i].y - pixels[i].y, 2);
+		if (e2 <= o.recognition_ransac_px * o.recognition_ransac_px) inlierObject.push_back(object[i]);
+	}
+	cv::Mat jacobian;
+	std::vector<cv::Point2f> unused;
+	cv::projectPoints(inlierObject, rvec, tvec, K, cv::noArray(), unused, jacobian);
+	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();
+	for (int r = 0; r < jacobian.rows; r++)
+	{
+		Eigen::Matrix<double, 1, 6> row;
+		for (int c = 0; c < 6; c++) row(c) = jacobian.at<double>(r, c);  // d/drvec (3), d/dtvec (3)
+		JtJ += row.transpose() * row;
+	}
+	const double sigmaPx = std::max(0.5, m.ProjErrRMS);
+	Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(JtJ);
+	if (!lu.isInvertible())
+	{
+		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
+		return m;
+	}
+	const Eigen::Matrix<double, 6, 6> poseCov = sigmaPx * sigmaPx * lu.inverse();
+	Eigen::Matrix<double, 3, 6> F;
+	for (int k = 0; k < 6; k++)
+	{
+		constexpr double h = 1e-6;
+		cv::Mat rp = rvec.clone(), tp = tvec.clone(), rm = rvec.clone(), tm = tvec.clone();
+		(k < 3 ? rp : tp).at<double>(k % 3) += h;
+		(k < 3 ? rm : tm).at<double>(k % 3) -= h;
+		const auto a = measurementFromPnP(rp, tp, mount).landmarkInRobot;
+		const auto b = measurementFromPnP(rm, tm, mount).landmarkInRobot;
+		F(0, k) = (a.x() - b.x()) / (2 * h);
+		F(1, k) = (a.y() - b.y()) / (2 * h);
+		F(2, k) = mrpt::math::wrapToPi(a.phi() - b.phi()) / (2 * h);
+	}
+	const Eigen::Matrix3d cov = F * poseCov * F.transpose();
+	m.stdPosition = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov.topLeftCorner<2, 2>())
+												 .eigenvalues()
+												 .maxCoeff()));
+	m.stdHeading = std::sqrt(std::max(0.0, cov(2, 2)));
 	return m;
 }

@@ -6,6 +6,12 @@
  * inliers, then through the camera mount the paper's measurement: the
  * landmark frame's planar pose (dx, dy, dtheta) in the robot frame, with
  * NPoints (inliers), ProjErrRMS (px) and Slope (robot tilt, rad).
+ * It also predicts how uncertain (dx, dy, dtheta) is: the pose covariance
+ * of the least-squares solve (reprojection Jacobian, the inliers' own
+ * error) carried to the planar measurement. A few points in a small part
+ * of the image leave rotation and sideways translation confusable, and
+ * their measurement can be degrees off with a small reprojection error:
+ * the paper's statistics do not see it, the predicted uncertainty does.
  */
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
@@ -26,6 +32,10 @@ struct VisualMeasurement
 	double ProjErrRMS = 0;  //!< px, over the inliers
 	double Slope = 0;  //!< tilt of the robot's z axis against the landmark's, rad
 	int matches = 0;  //!< descriptor matches before RANSAC
+	/** Predicted standard deviations of the measurement: of the position
+	 * (sqrt of the largest eigenvalue of its 2x2 covariance, m) and of the
+	 * heading (rad). */
+	double stdPosition = 0, stdHeading = 0;
 };
 
 /** The measurement of `landmark` in `image`, if the pose solve finds at

@@ -42,10 +42,16 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_max_candidates =
 		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);
 	recognition_min_inliers = readCount("recognition_min_inliers", recognition_min_inliers, 6, 100000);
+	recognition_min_inlier_ratio =
+		readDouble(c, s, "recognition_min_inlier_ratio", recognition_min_inlier_ratio, Range::closed(0, 1));
 	recognition_ransac_px =
 		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
+	recognition_max_std_xy =
+		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
+	recognition_max_std_phi = readDegreesAsRadians(
+		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
 	search_dims = readCount("search_dims", search_dims, 4, 128);
 	{
@@ -90,6 +96,12 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
 	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
 	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC iterations");
+	c.write(s, "recognition_min_inlier_ratio", recognition_min_inlier_ratio, 30, 10,
+		"Least share of the descriptor matches that must be PnP inliers");
+	c.write(s, "recognition_max_std_xy", recognition_max_std_xy, 30, 10,
+		"Reject a measurement whose predicted position std exceeds this [m] (0: off)");
+	c.write(s, "recognition_max_std_phi_deg", recognition_max_std_phi * 180 / M_PI, 30, 10,
+		"Reject a measurement whose predicted heading std exceeds this [deg] (0: off)");
 	c.write(s, "search_eps", search_eps, 30, 10, "Approximate descriptor search (nanoflann eps; 0: exact)");
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
 	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | projected (descriptor_dims B)");

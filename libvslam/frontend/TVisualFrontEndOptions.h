@@ -48,8 +48,17 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	int recognition_min_votes = 10;
 	int recognition_max_candidates = 5;  //!< candidates tried per image
 	int recognition_min_inliers = 12;  //!< PnP inliers to accept a pose
+	/** ... and at least this share of the descriptor matches must be PnP
+	 * inliers (a chance consensus among many wrong matches is a small share). */
+	double recognition_min_inlier_ratio = 0;
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
 	int recognition_ransac_iterations = 300;
+	/** A recognition whose predicted measurement uncertainty (from the pose
+	 * solve's geometry, LandmarkRecognizer.h) exceeds these is dropped:
+	 * few points in a small part of the image measure the pose poorly,
+	 * whatever their reprojection error (0: no limit). */
+	double recognition_max_std_xy = 0;  //!< m
+	double recognition_max_std_phi = 0;  //!< rad (INI: degrees)
 	/** Approximate search: nanoflann's eps (0: exact). */
 	double search_eps = 2.0;
 	/** The k-d tree votes in a random projection of the descriptors to this
