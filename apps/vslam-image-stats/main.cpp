@@ -6,12 +6,14 @@
  * (ratio test, then RANSAC fundamental-matrix inliers) between consecutive
  * images and at revisits (images 30 s or more apart taken within 0.3 m and
  * 15 deg of each other, by the true path TRUE_PATH). */
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/eval/ImageSequenceStats.h>
 #include <libvslam/obs/registerClasses.h>
 
 #include <cstdio>
+#include <iostream>
 
 namespace
 {
@@ -24,25 +26,16 @@ int main(int argc, const char** argv)
 	using namespace vslam;
 	registerObservationClasses();
 	return vslam::runTool("vslam-image-stats", kUsage, [&]() -> int {
-		std::vector<std::string> positional;
-		std::vector<config::Override> overrides;
-		std::string iniFile;
-		for (int i = 1; i < argc; i++)
+		const ToolArguments args = parseToolArguments(argc, argv, {"--config"}, {"--help"});
+		if (args.has("--help"))
 		{
-			const std::string a = argv[i];
-			if ((a == "--set" || a == "--config") && i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-			if (a == "--set")
-				overrides.push_back(config::parseOverride(argv[++i]));
-			else if (a == "--config")
-				iniFile = argv[++i];
-			else if (a.rfind("--", 0) == 0)
-				throw std::invalid_argument("unknown option '" + a + "'");
-			else
-				positional.push_back(a);
+			std::cout << kUsage;
+			return 0;
 		}
+		const auto& positional = args.positional;
 		if (positional.size() != 2) throw std::invalid_argument("expected RAWLOG TRUE_PATH");
 		const auto s = computeImageSequenceStats(
-			positional[0], readTrajectory(positional[1]), loadFrontEndOptions(iniFile, overrides));
+			positional[0], readTrajectory(positional[1]), loadFrontEndOptions(args.value("--config"), args.overrides));
 		std::printf("vslam-image-stats: %zu images; SIFT features per image: median %.0f, min %.0f, %zu images under 100\n",
 			s.images, s.medianFeatures, s.minFeatures, s.imagesUnder100Features);
 		const auto row = [](const char* what, const MatchStats& m) {

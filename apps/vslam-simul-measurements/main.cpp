@@ -4,17 +4,16 @@
  *
  * Reads [vslam_sim] (see config_ini/simul_measurements_example.ini) and
  * writes OUTPUT.rawlog, OUTPUT_groundtruth.tum and OUTPUT_landmarks.txt. */
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/config/IniText.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/sim/SimulatedRunFiles.h>
-#include <mrpt/config/CConfigFileMemory.h>
 
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace
 {
@@ -27,41 +26,24 @@ int main(int argc, const char** argv)
 {
 	using namespace vslam;
 	return vslam::runTool("vslam-simul-measurements", kUsage, [&]() -> int {
-		std::vector<std::string> positional;
-		std::vector<config::Override> overrides;
-		for (int i = 1; i < argc; i++)
+		const ToolArguments args = parseToolArguments(argc, argv, {}, {"--help", "--print-default-config"});
+		if (args.has("--help"))
 		{
-			const std::string a = argv[i];
-			if (a == "--help" || a == "-h")
-			{
-				std::cout << kUsage;
-				return 0;
-			}
-			if (a == "--print-default-config")
-			{
-				mrpt::config::CConfigFileMemory c;
-				TMeasurementSimOptions().saveToConfigFile(c, TMeasurementSimOptions::kSection);
-				std::string text;
-				c.getContent(text);
-				std::cout << text;
-				return 0;
-			}
-			if (a == "--set" && i + 1 < argc)
-				overrides.push_back(config::parseOverride(argv[++i]));
-			else if (a.rfind("--", 0) == 0)
-				throw std::invalid_argument("unknown option '" + a + "'");
-			else
-				positional.push_back(a);
+			std::cout << kUsage;
+			return 0;
 		}
+		if (args.has("--print-default-config"))
+		{
+			std::cout << config::toIniText(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
+			return 0;
+		}
+		const auto& positional = args.positional;
 		if (positional.size() != 2) throw std::invalid_argument("expected CONFIG.ini OUTPUT.rawlog");
-		std::ifstream in(positional[0]);
-		if (!in) throw ConfigError("cannot read configuration file '" + positional[0] + "'");
-		std::stringstream text;
-		text << in.rdbuf();
+		const std::string text = config::readIniFile(positional[0]);
 		TMeasurementSimOptions options;
 		try
 		{
-			options = loadMeasurementSimOptions(text.str(), overrides);
+			options = loadMeasurementSimOptions(text, args.overrides);
 		}
 		catch (const ConfigError& e)
 		{

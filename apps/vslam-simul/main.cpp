@@ -8,13 +8,14 @@
  * step, a camera image every few steps; vslam and rbpf-slam read it),
  * the images in OUTPUT_Images/, OUTPUT_groundtruth.tum (true path),
  * OUTPUT_odometry.tum (dead reckoning) and OUTPUT_preview.png. */
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/config/IniText.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/world/FloorPlanFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/CTicTac.h>
 
 #include <filesystem>
@@ -31,35 +32,20 @@ int main(int argc, const char** argv)
 {
 	using namespace vslam;
 	return vslam::runTool("vslam-simul", kUsage, [&]() -> int {
-		std::vector<std::string> positional;
-		std::vector<config::Override> overrides;
-		bool quiet = false;
-		for (int i = 1; i < argc; i++)
+		const ToolArguments args = parseToolArguments(argc, argv, {}, {"--help", "--print-default-config", "--quiet"});
+		if (args.has("--help"))
 		{
-			const std::string a = argv[i];
-			if (a == "--help" || a == "-h")
-			{
-				std::cout << kUsage;
-				return 0;
-			}
-			if (a == "--print-default-config")
-			{
-				mrpt::config::CConfigFileMemory c;
-				TVisualSimOptions().saveToConfigFile(c, TVisualSimOptions::kSection);
-				std::string text;
-				c.getContent(text);
-				std::cout << text;
-				return 0;
-			}
-			if (a == "--quiet")
-				quiet = true;
-			else if (a == "--set" && i + 1 < argc)
-				overrides.push_back(config::parseOverride(argv[++i]));
-			else if (a.rfind("--", 0) == 0)
-				throw std::invalid_argument("unknown option '" + a + "'");
-			else
-				positional.push_back(a);
+			std::cout << kUsage;
+			return 0;
 		}
+		if (args.has("--print-default-config"))
+		{
+			std::cout << config::toIniText(TVisualSimOptions(), TVisualSimOptions::kSection);
+			return 0;
+		}
+		const auto& positional = args.positional;
+		const auto& overrides = args.overrides;
+		const bool quiet = args.has("--quiet");
 		if (positional.size() != 2) throw std::invalid_argument("expected CONFIG.ini OUTPUT.rawlog");
 		const std::string& ini = positional[0];
 		const std::string text = config::readIniFile(ini);

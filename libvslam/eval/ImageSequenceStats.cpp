@@ -1,4 +1,5 @@
 #include <libvslam/core/InputError.h>
+#include <libvslam/eval/Median.h>
 #include <libvslam/eval/ImageSequenceStats.h>
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/io/CRawlogReader.h>
@@ -11,13 +12,6 @@ namespace vslam
 {
 namespace
 {
-double median(std::vector<double> v)
-{
-	if (v.empty()) return 0;
-	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-	return v[v.size() / 2];
-}
-
 struct Frame
 {
 	double t;

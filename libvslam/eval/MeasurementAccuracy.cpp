@@ -1,3 +1,4 @@
+#include <libvslam/eval/Median.h>
 #include <libvslam/eval/MeasurementAccuracy.h>
 
 #include <algorithm>
@@ -7,13 +8,6 @@ namespace vslam
 {
 namespace
 {
-double median(std::vector<double> v)
-{
-	if (v.empty()) return 0;
-	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-	return v[v.size() / 2];
-}
-
 struct ErrorList
 {
 	std::vector<double> position, heading;
