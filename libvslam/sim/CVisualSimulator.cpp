@@ -81,6 +81,59 @@ mrpt::obs::CObservation2DRangeScan::Ptr laserScan(const TVisualSimOptions& o, co
 	}
 	return scan;
 }
+
+/** Where a kidnapped robot is put: a random free pose at least
+ * kidnap_min_distance away (waypoint loops: a random waypoint, heading for
+ * the next one, whose index `nextWaypoint` becomes). */
+se2::Pose kidnapTarget(const TVisualSimOptions& o, const FreeSpace& fs, const se2::Pose& from,
+	mrpt::random::CRandomGenerator& rng, size_t& nextWaypoint)
+{
+	const bool waypoints = o.path_type == TVisualSimOptions::PathType::Waypoints;
+	se2::Pose to;
+	for (int attempt = 0; attempt < 1000; attempt++)
+	{
+		if (waypoints)
+		{
+			nextWaypoint = static_cast<size_t>(rng.drawUniform32bit() % (o.waypoints.size() / 2));
+			const Eigen::Vector2d at = waypoint(o, nextWaypoint), next = waypoint(o, ++nextWaypoint);
+			to = {at[0], at[1], std::atan2(next[1] - at[1], next[0] - at[0])};
+		}
+		else
+		{
+			const Eigen::Vector2d at = fs.freeCell(rng.drawUniform(0, 1));
+			to = {at[0], at[1], rng.drawUniform(-M_PI, M_PI)};
+		}
+		if (std::hypot(to.x - from.x, to.y - from.y) >= o.kidnap_min_distance) break;
+	}
+	return to;
+}
+
+/** The camera image at step k: rendered, with the image defects of that
+ * moment, written to imagesDir, as the observation that names it. */
+mrpt::obs::CObservationImage::Ptr renderFrame(const TVisualSimOptions& o, const SimulationEvents& events,
+	const world::WorldScene& world, CameraRenderer& renderer, const mrpt::poses::CPose3D& mount,
+	const se2::Pose& robot, double turnRate, size_t k, mrpt::Clock::time_point t, const std::string& imagesDir)
+{
+	const double tRel = k * o.dt;
+	cv::Mat img = renderer.render(world.scene(), mrpt::poses::CPose3D(mrpt::poses::CPose2D(robot)) + mount);
+	CameraDefects d;
+	d.gain = events.lightingGain(tRel);
+	d.blackout = events.blackout(tRel);
+	d.blurPixels = std::abs(turnRate) * o.exposure_time * o.camera.fx();
+	d.noiseStd = o.image_noise_std;
+	d.noiseSeed = (static_cast<uint64_t>(o.seed) << 32) ^ k;
+	CameraRenderer::applyDefects(img, d);
+	if (o.camera_grayscale) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
+	const std::string name = "img_" + std::to_string(k) + (o.image_format == "jpg" ? ".jpg" : ".png");
+	if (!cv::imwrite(imagesDir + "/" + name, img)) throw InputError("cannot write image '" + imagesDir + "/" + name + "'");
+	auto obs = mrpt::obs::CObservationImage::Create();
+	obs->timestamp = t;
+	obs->sensorLabel = "CAMERA";
+	obs->cameraParams = o.camera;
+	obs->cameraPose = mount;
+	obs->image.setExternalStorage(name);
+	return obs;
+}
 }  // namespace
 
 CVisualSimulator::CVisualSimulator(const TVisualSimOptions& options, const world::FloorPlan& plan)
@@ -156,7 +209,6 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 	std::sort(kidnaps.begin(), kidnaps.end());
 	size_t nextKidnap = 0;
 	mrpt::system::CTicTac renderClock;
-	const std::string ext = o.image_format == "jpg" ? ".jpg" : ".png";
 
 	for (size_t k = 1; k <= steps; k++)  // every entry holds an odometry increment
 	{
@@ -182,27 +234,8 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 			if (nextKidnap < kidnaps.size() && tRel >= kidnaps[nextKidnap])
 			{
 				nextKidnap++;
-				for (int attempt = 0; attempt < 1000; attempt++)
-				{
-					Eigen::Vector2d to;
-					double heading;
-					if (waypoints)
-					{
-						nextWaypoint = static_cast<size_t>(rng.drawUniform32bit() % (o.waypoints.size() / 2));
-						to = waypoint(o, nextWaypoint);
-						const Eigen::Vector2d next = waypoint(o, ++nextWaypoint);
-						heading = std::atan2(next[1] - to[1], next[0] - to[0]);
-						driver.setGoal(next);
-					}
-					else
-						to = fs.freeCell(rng.drawUniform(0, 1)), heading = rng.drawUniform(-M_PI, M_PI);
-					if ((to - Eigen::Vector2d(pose.x, pose.y)).norm() >= o.kidnap_min_distance || attempt == 999)
-					{
-						pose = {to[0], to[1], heading};
-						break;
-					}
-				}
-				if (!waypoints) driver.setGoal(randomGoal(fs, pose, rng));
+				pose = kidnapTarget(o, fs, pose, rng, nextWaypoint);
+				driver.setGoal(waypoints ? waypoint(o, nextWaypoint) : randomGoal(fs, pose, rng));
 				out.kidnapSteps.push_back(k);
 			}
 		}
@@ -222,28 +255,10 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 		if (k % framePeriod == 0)
 		{
 			renderClock.Tic();
-			cv::Mat img = renderer.render(world.scene(), mrpt::poses::CPose3D(mrpt::poses::CPose2D(pose)) + mount);
-			CameraDefects d;
-			d.gain = events.lightingGain(tRel);
-			d.blackout = events.blackout(tRel);
-			d.blurPixels = std::abs(turnRate) * o.exposure_time * o.camera.fx();
-			d.noiseStd = o.image_noise_std;
-			d.noiseSeed = (static_cast<uint64_t>(o.seed) << 32) ^ k;
-			CameraRenderer::applyDefects(img, d);
-			if (o.camera_grayscale) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
-			const std::string name = "img_" + std::to_string(k) + ext;
-			if (!cv::imwrite(imagesDir + "/" + name, img))
-				throw InputError("cannot write image '" + imagesDir + "/" + name + "'");
+			sf->insert(renderFrame(o, events, world, renderer, mount, pose, turnRate, k, t, imagesDir));
 			out.renderSeconds += renderClock.Tac();
-			auto obs = mrpt::obs::CObservationImage::Create();
-			obs->timestamp = t;
-			obs->sensorLabel = "CAMERA";
-			obs->cameraParams = o.camera;
-			obs->cameraPose = mount;
-			obs->image.setExternalStorage(name);
-			sf->insert(obs);
 			out.images++;
-			out.blackFrames += d.blackout;
+			out.blackFrames += events.blackout(tRel);
 			if (progress) progress(static_cast<double>(k) / steps);
 		}
 		out.entries.emplace_back(action, sf);
