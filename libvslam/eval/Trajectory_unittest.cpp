@@ -58,6 +58,22 @@ TEST(Trajectory, MalformedFilesNameTheLine)
 	EXPECT_THROW(readTumTrajectory(dir.file("missing.tum")), InputError);
 }
 
+TEST(Trajectory, ALastRowCutByAKilledWriterIsSkippedOnlyIfUnterminated)
+{
+	vslam::testing::TempDir dir;
+	// What SIGKILL can leave: the last row cut mid-write, without its newline.
+	std::ofstream(dir.file("cut.txt")) << "% step x y z yaw pitch roll t\n0 0 0 0 0 0 0 1.5\n1 0.1 0 0 0 0 0 2.0\n2 0.2";
+	EXPECT_EQ(readRbpfSlamPath(dir.file("cut.txt")).size(), 2u);
+	std::ofstream(dir.file("cut2.tum")) << "1 2 3 4 5 6 7 8\n2 2 3 4 5 6 7 8\n3 2 3 4 5 6 7 0.9x";
+	EXPECT_EQ(readTumTrajectory(dir.file("cut2.tum")).size(), 2u);
+	// A whole last row without its newline is data.
+	std::ofstream(dir.file("whole.tum")) << "1 2 3 4 5 6 7 8\n2 2 3 4 5 6 7 8";
+	EXPECT_EQ(readTumTrajectory(dir.file("whole.tum")).size(), 2u);
+	// With its newline, a short row is an error as before.
+	std::ofstream(dir.file("short.tum")) << "1 2 3 4 5 6 7 8\n2 2 3\n";
+	EXPECT_THROW(readTumTrajectory(dir.file("short.tum")), InputError);
+}
+
 TEST(Trajectory, MrptPoseListsAreIndexedBySteps)
 {
 	vslam::testing::TempDir dir;

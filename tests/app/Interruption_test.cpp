@@ -157,7 +157,9 @@ TEST(Interruption, KilledRunsLeaveParseableOutputsUpToTheKill)
 		stopped++;
 		EXPECT_EQ(r.signal, SIGKILL);
 		checkPaths(out, steps);
-		// The per-step log's rows are whole too.
+		// The per-step log's rows are whole too, but for the last one if the
+		// kill cut its write: then it has no newline (a write that crosses a
+		// page of the file can be cut by SIGKILL), and readers skip it.
 		std::ifstream f(out + "/log_filter_steps.txt");
 		std::string line;
 		std::getline(f, line);	// header
@@ -168,6 +170,7 @@ TEST(Interruption, KilledRunsLeaveParseableOutputsUpToTheKill)
 			double v;
 			int columns = 0;
 			while (in >> v) columns++;
+			if (f.eof() && columns != 11) break;  // the unterminated last row
 			EXPECT_EQ(columns, 11) << "row " << rows << ": '" << line << "'";
 		}
 		EXPECT_GE(rows, steps);
