@@ -137,10 +137,10 @@ mrpt::obs::CObservationImage::Ptr renderFrame(const TVisualSimOptions& o, const 
 }  // namespace
 
 CVisualSimulator::CVisualSimulator(const TVisualSimOptions& options, const world::FloorPlan& plan)
-	: m_options(options), m_plan(plan)
+	: m_options(options), m_plan(plan), m_free(m_plan, options.robot_radius, startPoint(options))
 {
 	const TVisualSimOptions& o = m_options;
-	const FreeSpace fs(m_plan, o.robot_radius, startPoint(o));
+	const FreeSpace& fs = m_free;
 	const auto blocked = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::string& what) {
 		if (const world::Segment* s = fs.blockingSegment(a, b))
 			throw InputError(
@@ -172,7 +172,7 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 	const TVisualSimOptions& o = m_options;
 	std::filesystem::create_directories(imagesDir);
 	mrpt::random::CRandomGenerator rng(o.seed);  // robot, odometry, laser, kidnaps
-	const FreeSpace fs(m_plan, o.robot_radius, startPoint(o));
+	const FreeSpace& fs = m_free;
 	const SimulationEvents events(o);
 	world::WorldScene world(m_plan, events.peopleCount(), o.texture_max_side);
 	CameraRenderer renderer(o.camera);

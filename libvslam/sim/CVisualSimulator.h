@@ -13,6 +13,7 @@
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/sim/TVisualSimOptions.h>
 #include <libvslam/world/FloorPlan.h>
+#include <libvslam/world/FreeSpace.h>
 
 #include <functional>
 #include <string>
@@ -48,6 +49,7 @@ class CVisualSimulator
    private:
 	TVisualSimOptions m_options;
 	world::FloorPlan m_plan;
+	world::FreeSpace m_free;  //!< where the robot can be, from its start
 };
 
 /** Floor plan, free space, true path (green), odometry path (red), kidnaps

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 using vslam::testing::readFile;
+using vslam::testing::contains;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 namespace fs = std::filesystem;
@@ -26,10 +27,6 @@ const std::string kPreload = std::string(VSLAM_SANITIZER_RUNTIME).empty()
 		kObsLib + "' ";
 const std::string kDemoRawlog = kSource + "/rawlogs/demo_visual.rawlog";
 
-bool contains(const std::string& text, const std::string& part)
-{
-	return text.find(part) != std::string::npos;
-}
 
 std::string rawlogEdit()
 {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 using vslam::testing::readFile;
+using vslam::testing::contains;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 namespace fs = std::filesystem;
@@ -21,7 +22,6 @@ namespace
 const std::string kSource = VSLAM_SOURCE_DIR;
 const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 size_t dataRows(const std::string& file)
 {

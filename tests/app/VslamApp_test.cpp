@@ -18,6 +18,7 @@
 
 using namespace vslam;
 using vslam::testing::readFile;
+using vslam::testing::contains;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 namespace fs = std::filesystem;
@@ -46,10 +47,6 @@ size_t lineCount(const std::string& file)
 	return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
 }
 
-bool contains(const std::string& text, const std::string& part)
-{
-	return text.find(part) != std::string::npos;
-}
 
 /** A copy of the demo rawlog cut to `fraction` of its bytes. */
 std::string truncatedDemo(const TempDir& dir, double fraction)

@@ -30,6 +30,11 @@ inline CommandResult runCommand(const std::string& command)
 	return r;
 }
 
+inline bool contains(const std::string& text, const std::string& part)
+{
+	return text.find(part) != std::string::npos;
+}
+
 inline std::string readFile(const std::string& file)
 {
 	std::ifstream in(file, std::ios::binary);
