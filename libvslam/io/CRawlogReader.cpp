@@ -14,11 +14,13 @@
 using namespace vslam;
 using mrpt::serialization::CSerializable;
 
-CRawlogReader::CRawlogReader(const std::string& fileName) : m_fileName(fileName)
+CRawlogReader::CRawlogReader(const std::string& fileName, std::optional<TIsolatedReadLimits> isolation)
+	: m_fileName(fileName)
 {
 	m_stream = std::make_unique<CCheckedGzInputStream>(fileName);
 	m_archive = mrpt::serialization::archiveUniquePtrFrom(*m_stream);
 	mrpt::img::CImage::setImagesPathBase(imagesDirectory(fileName));
+	if (isolation) m_unreadable = findUnreadableEntry(fileName, *isolation);
 }
 
 CRawlogReader::~CRawlogReader() = default;
@@ -54,6 +56,7 @@ CSerializable::Ptr CRawlogReader::readObject(size_t& entry)
 	}
 	if (m_eof) return nullptr;
 	entry = m_objects;
+	if (m_unreadable && m_unreadable->entry == entry) fail(entry, "corrupt data: " + m_unreadable->why);
 	const uint64_t before = m_stream->getPosition();
 	checkElementCount(entry);
 	try
@@ -120,6 +123,16 @@ void CRawlogReader::checkOdometry(const mrpt::obs::CActionCollection& a, size_t 
 	if (p && (std::abs(p->x()) > kMaxIncrement || std::abs(p->y()) > kMaxIncrement || std::abs(p->phi()) > kMaxIncrement))
 		fail(entry, "odometry increment (" + std::to_string(p->x()) + ", " + std::to_string(p->y()) + ", " +
 			std::to_string(p->phi()) + ") is beyond any robot's motion between readings: corrupt data");
+}
+
+void CRawlogReader::scanObjects(const std::function<void(size_t entry)>& beforeEach)
+{
+	for (;;)
+	{
+		beforeEach(m_objects);
+		size_t entry = 0;
+		if (!readObject(entry)) return;
+	}
 }
 
 bool CRawlogReader::next(RawlogStep& step)

@@ -11,6 +11,7 @@
  * truncated or corrupt data, unknown classes, non-finite odometry) throws
  * InputError naming the file and the entry.
  */
+#include <libvslam/io/IsolatedRawlogCheck.h>
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservation.h>
@@ -18,6 +19,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,8 +46,13 @@ class CRawlogReader
    public:
 	/** Opens the rawlog; throws InputError if it cannot be read. Also points
 	 * MRPT's external-image path at "<dir>/<name>_Images" (the folder
-	 * MRPT's rawlog-edit uses; see mrpt-2.5-notes pitfall 2). */
-	explicit CRawlogReader(const std::string& fileName);
+	 * MRPT's rawlog-edit uses; see mrpt-2.5-notes pitfall 2).
+	 * With \a isolation (the default), the whole file is first read once in
+	 * a child process (IsolatedRawlogCheck.h): an entry whose bytes crash,
+	 * hang or exhaust MRPT's deserializers there is an InputError naming it
+	 * when reading gets to it, instead of a crash of this process. */
+	explicit CRawlogReader(
+		const std::string& fileName, std::optional<TIsolatedReadLimits> isolation = TIsolatedReadLimits());
 	~CRawlogReader();
 
 	/** The next step, or false at the end of the file. */
@@ -61,6 +68,11 @@ class CRawlogReader
 	/** Objects of other classes that were skipped. */
 	size_t skippedObjects() const { return m_skipped; }
 
+	/** Reads every remaining object without grouping them into steps,
+	 * calling \a beforeEach with each one's entry index before reading it
+	 * (what the isolated check's child process does). Throws as next(). */
+	void scanObjects(const std::function<void(size_t entry)>& beforeEach);
+
 	/** The external-images folder of a rawlog file. */
 	static std::string imagesDirectory(const std::string& rawlogFile);
 
@@ -73,6 +85,8 @@ class CRawlogReader
 	size_t m_objects = 0, m_skipped = 0, m_format1Steps = 0, m_format2Steps = 0;
 	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
 	bool m_eof = false;
+	/** Found by the isolated check: reading stops there with an error. */
+	std::optional<UnreadableEntry> m_unreadable;
 
 	/** Next object or nullptr at a clean end of file. */
 	mrpt::serialization::CSerializable::Ptr readObject(size_t& entry);

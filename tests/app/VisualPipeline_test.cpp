@@ -89,7 +89,9 @@ TEST(VisualPipeline, FrontEndAloneThenFilterEqualsOneRunAndRunsRepeatExactly)
 	for (const char* f : {"log_estimated_path.txt", "final_map.txt", "log_filter_steps.txt"})
 	{
 		if (std::string(f) != "log_filter_steps.txt")  // step times differ
+		{
 			EXPECT_EQ(readFile(dir.file(std::string("one/") + f)), readFile(dir.file(std::string("again/") + f))) << f;
+		}
 	}
 	// Same path; only the first step's time is lost in the measurement
 	// rawlog (its one image made no observation and it has no odometry).

@@ -254,6 +254,19 @@ TEST(VslamApp, CorruptRawlogFailsNamingTheFile)
 	EXPECT_TRUE(contains(t.output, dir.file("text.rawlog"))) << t.output;
 }
 
+// Found by fuzz_rawlog: bytes on which MRPT 2.5.8's own deserializer
+// dereferences a null pointer (entry 6). vslam used to die of SIGSEGV here.
+TEST(VslamApp, RawlogThatCrashesMrptsDeserializerIsAnInputErrorNamingTheEntry)
+{
+	TempDir dir;
+	const std::string file =
+		std::string(VSLAM_SOURCE_DIR) + "/libvslam/io/testdata/segv_in_mrpt_deserializer_1.rawlog";
+	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	EXPECT_EQ(r.exitCode, 3) << r.output;
+	EXPECT_TRUE(contains(r.output, file + "', entry 6: corrupt data")) << r.output;
+	EXPECT_TRUE(contains(readFile(dir.file("o/run_summary.yaml")), "status: failed"));
+}
+
 TEST(VslamApp, NanOdometryNamesTheEntry)
 {
 	TempDir dir;
