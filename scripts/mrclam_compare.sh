@@ -30,7 +30,7 @@ OUT="$(cd "$OUT" && pwd)"
 name="$(basename "$DATASET" | sed 's/MRCLAM_Dataset/d/')"
 
 rmse() { # ESTIMATE GROUND_TRUTH -> RMSE
-  "$BIN/vslam-eval" "$1" "$2" | sed 's/.* rmse \([0-9.]*\) .*/\1/'
+  "$BIN/vslam-eval" "$1" "$2" | head -n 1 | sed 's/.* rmse \([0-9.]*\) .*/\1/'
 }
 mean() { awk '{s=0; for(i=1;i<=NF;i++) s+=$i; printf "%.2f", s/NF}' <<< "$*"; }
 

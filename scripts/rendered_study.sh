@@ -66,7 +66,7 @@ for ini in "${INIS[@]}"; do
   start=$(date +%s.%N)
   (cd "$d" && rbpf-slam "$RBPF_INI" "$d/sim.rawlog" >> "$log" 2>&1) || { tail -20 "$log" >&2; exit 1; }
   rbpf_s="$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.0f", b-a}')"
-  r="$("$BIN/vslam-eval" "$d/rbpf-slam_out/log_estimated_path.txt" "$gt" --align | sed 's/.*rmse \([0-9.]*\).*/\1/')"
+  r="$("$BIN/vslam-eval" "$d/rbpf-slam_out/log_estimated_path.txt" "$gt" --align | head -n 1 | sed 's/.*rmse \([0-9.]*\).*/\1/')"
   "$BIN/vslam-eval" "$d/vslam/estimated_path.tum" "$gt" --odometry "$d/sim_odometry.tum" \
     --world "$(grep -m1 '^world_file' "$ini" | sed 's/.*= *//' | sed "s|^|$(dirname "$ini")/|")" \
     --plot "$d/paths.png" > /dev/null

@@ -1,19 +1,18 @@
-/** vslam-eval: absolute trajectory error of an estimate against ground
- * truth (Sturm et al. 2012 conventions, planar).
- *
- *   vslam-eval ESTIMATE GROUND_TRUTH [--align] [--max-gap SECONDS]
- *              [--plot FILE.png [--odometry PATH] [--world WORLD_FILE]]
- *
- * Both files may be TUM ("t x y z qx qy qz qw") or rbpf-slam's
- * log_estimated_path.txt ("step x y z yaw pitch roll t"). Estimated poses
- * are associated with the ground truth interpolated at their timestamps. */
+/** vslam-eval: trajectory error of an estimate against ground truth (Sturm
+ * et al. 2012 conventions, planar): ATE raw and after SE(2) alignment, RPE
+ * over time or distance windows, the error over time as CSV, and the
+ * paper's figures for a run. See kUsage. */
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
+#include <libvslam/eval/RelativePoseError.h>
+#include <libvslam/eval/RunFigures.h>
 #include <libvslam/eval/TrajectoryPlot.h>
 #include <libvslam/world/FloorPlanFile.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -21,17 +20,88 @@
 namespace
 {
 const char* kUsage =
-	"Usage: vslam-eval ESTIMATE GROUND_TRUTH [--align] [--max-gap SECONDS]\n"
-	"                  [--plot FILE.png [--odometry PATH] [--world WORLD_FILE]]\n"
+	"Usage: vslam-eval ESTIMATE GROUND_TRUTH [options]\n"
+	"       vslam-eval --run VSLAM_OUTPUT_DIR GROUND_TRUTH [options]\n"
 	"  ESTIMATE, GROUND_TRUTH: TUM (timestamp x y z qx qy qz qw), rbpf-slam's\n"
 	"  log_estimated_path.txt (step x y z yaw pitch roll timestamp), or (ground truth)\n"
 	"  an MRPT per-step pose list (x y z yaw pitch roll); detected per file. Ground\n"
 	"  truth is interpolated at the estimate's timestamps (matched by step for pose lists).\n"
-	"  --align: SE(2) alignment before the error. --max-gap: largest ground-truth\n"
-	"  gap to interpolate across (s). --plot: the paths as a PNG (estimate, after the\n"
-	"  alignment if --align; ground truth; odometry if given) over the floor plan of a\n"
-	"  vslam-simul world file if given (textures under /usr/share).\n";
+	"  --run DIR: the estimate is DIR/estimated_path.tum, the odometry DIR/odometry_path.tum,\n"
+	"     and the figures go to DIR/figures/ (unless --figures says otherwise).\n"
+	"Prints ATE (RMSE, mean, median, max, heading RMSE) raw and after SE(2) alignment,\n"
+	"and RPE (translation, rotation, drift as % of distance) per window; the same for\n"
+	"the odometry if given. Options:\n"
+	"  --align             the aligned ATE first (and the figures and CSV aligned)\n"
+	"  --max-gap S         largest ground-truth gap to interpolate across (default 0.5 s)\n"
+	"  --rpe-time S        RPE window in seconds (default 1; repeatable)\n"
+	"  --rpe-distance M    RPE window in metres travelled (repeatable)\n"
+	"  --odometry PATH     dead reckoning to evaluate and draw beside the estimate\n"
+	"  --csv FILE          the error over time: series,t,error_xy_m,error_heading_deg\n"
+	"  --plot FILE.png     the paths only (estimate, truth, odometry) over the floor plan\n"
+	"  --figures DIR       the paper's figures: paths, error over time, and with --run\n"
+	"                      measurements per landmark, particle spread, dual ratio\n"
+	"  --world WORLD_FILE  a vslam-simul world file: its floor plan under the paths\n";
+
+double positiveNumber(const std::string& option, const char* text)
+{
+	char* end = nullptr;
+	const double v = std::strtod(text, &end);
+	if (*end != '\0' || !(v > 0) || !std::isfinite(v))
+		throw std::invalid_argument(option + " needs a positive number, not '" + text + "'");
+	return v;
 }
+
+void printAte(const std::string& prefix, const vslam::AteStats& s, bool aligned)
+{
+	std::printf("%s%s: poses %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f\n", prefix.c_str(),
+		aligned ? "ate_se2_aligned" : "ate", s.associated, s.rmse, s.mean, s.median, s.max,
+		s.headingRmse * 180 / M_PI);
+}
+
+void printRpe(const std::string& prefix, const vslam::RpeStats& s, const vslam::RpeOptions& o)
+{
+	char window[64];
+	std::snprintf(window, sizeof window, "%g%s", o.delta, o.window == vslam::RpeOptions::Window::Time ? "s" : "m");
+	std::printf(
+		"%srpe_%s: pairs %zu trans_rmse %.4f trans_mean %.4f trans_median %.4f trans_max %.4f "
+		"rot_rmse_deg %.3f rot_mean_deg %.3f drift_pct %.2f\n",
+		prefix.c_str(), window, s.translation.count, s.translation.rmse, s.translation.mean, s.translation.median,
+		s.translation.max, s.rotation.rmse * 180 / M_PI, s.rotation.mean * 180 / M_PI,
+		s.meanTravelled > 0 ? 100 * s.translation.mean / s.meanTravelled : 0.0);
+}
+
+/** Both ATE lines (the asked-for one first) and the RPE lines; returns the
+ * asked-for ATE. */
+vslam::AteStats report(const std::string& prefix, const vslam::Trajectory& estimate, const vslam::Trajectory& truth,
+	vslam::AteOptions o, const std::vector<vslam::RpeOptions>& windows)
+{
+	const vslam::AteStats asked = vslam::computeAte(estimate, truth, o);
+	if (asked.associated == 0)
+		throw vslam::InputError(
+			(prefix.empty() ? "the estimate" : "the odometry") + std::string(": no pose has ground truth at its time"));
+	printAte(prefix, asked, o.align);
+	o.align = !o.align;
+	printAte(prefix, vslam::computeAte(estimate, truth, o), o.align);
+	for (auto w : windows)
+	{
+		w.maxGap = o.maxGap;
+		printRpe(prefix, vslam::computeRpe(estimate, truth, w), w);
+	}
+	return asked;
+}
+
+void writeErrorCsv(const std::string& file, const std::vector<std::pair<std::string, vslam::AteStats>>& series)
+{
+	FILE* f = std::fopen(file.c_str(), "wt");
+	if (!f) throw vslam::InputError("cannot create '" + file + "'");
+	std::fprintf(f, "series,t,error_xy_m,error_heading_deg\n");
+	for (const auto& [name, s] : series)
+		for (size_t i = 0; i < s.errors.size(); i++)
+			std::fprintf(f, "%s,%.6f,%.6f,%.4f\n", name.c_str(), s.times[i], s.errors[i],
+				s.headingErrors[i] * 180 / M_PI);
+	if (std::fclose(f) != 0) throw vslam::InputError("cannot write '" + file + "'");
+}
+}  // namespace
 
 int main(int argc, const char** argv)
 {
@@ -39,11 +109,13 @@ int main(int argc, const char** argv)
 	try
 	{
 		AteOptions o;
+		std::vector<RpeOptions> windows;
 		std::vector<std::string> files;
-		std::string plotFile, odometryFile, worldFile;
+		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
+			const bool hasValue = i + 1 < argc;
 			if (a == "--help" || a == "-h")
 			{
 				std::cout << kUsage;
@@ -51,40 +123,79 @@ int main(int argc, const char** argv)
 			}
 			if (a == "--align")
 				o.align = true;
-			else if (a == "--max-gap" && i + 1 < argc)
+			else if (a == "--max-gap" && hasValue)
+				o.maxGap = positiveNumber(a, argv[++i]);
+			else if ((a == "--rpe-time" || a == "--rpe-distance") && hasValue)
 			{
-				char* end = nullptr;
-				o.maxGap = std::strtod(argv[++i], &end);
-				if (*end != '\0' || !(o.maxGap > 0))
-					throw std::invalid_argument("--max-gap needs a positive number");
+				RpeOptions w;
+				w.window = a == "--rpe-time" ? RpeOptions::Window::Time : RpeOptions::Window::Distance;
+				w.delta = positiveNumber(a, argv[++i]);
+				windows.push_back(w);
 			}
-			else if ((a == "--plot" || a == "--odometry" || a == "--world") && i + 1 < argc)
-				(a == "--plot" ? plotFile : a == "--odometry" ? odometryFile : worldFile) = argv[++i];
+			else if (a == "--run" && hasValue)
+				runDir = argv[++i];
+			else if (a == "--csv" && hasValue)
+				csvFile = argv[++i];
+			else if (a == "--plot" && hasValue)
+				plotFile = argv[++i];
+			else if (a == "--figures" && hasValue)
+				figuresDir = argv[++i];
+			else if (a == "--odometry" && hasValue)
+				odometryFile = argv[++i];
+			else if (a == "--world" && hasValue)
+				worldFile = argv[++i];
 			else if (a.rfind("--", 0) == 0)
-				throw std::invalid_argument("unknown option '" + a + "'");
+				throw std::invalid_argument("unknown option '" + a + "' (or its value is missing)");
 			else
 				files.push_back(a);
 		}
+		if (!runDir.empty())
+		{
+			if (files.size() != 1) throw std::invalid_argument("expected --run DIR GROUND_TRUTH");
+			files.insert(files.begin(), runDir + "/estimated_path.tum");
+			if (odometryFile.empty() && std::filesystem::exists(runDir + "/odometry_path.tum"))
+				odometryFile = runDir + "/odometry_path.tum";
+			if (figuresDir.empty()) figuresDir = runDir + "/figures";
+		}
 		if (files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
+		if (windows.empty()) windows.push_back(RpeOptions());  // 1 s, as the TUM tools
+
 		const Trajectory estimate = readTrajectory(files[0]), truth = readTrajectory(files[1]);
-		const AteStats s = computeAte(estimate, truth, o);
-		if (s.associated == 0)
-			throw InputError("no estimated pose has ground truth at its time");
-		std::printf("ate%s: poses %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f\n",
-			o.align ? "_se2_aligned" : "", s.associated, s.rmse, s.mean, s.median, s.max,
-			s.headingRmse * 180 / M_PI);
+		const AteStats s = report("", estimate, truth, o, windows);
+		std::vector<std::pair<std::string, AteStats>> csv{{"estimate", s}};
+		std::optional<Trajectory> odometry;
+		if (!odometryFile.empty())
+		{
+			odometry = readTrajectory(odometryFile);
+			AteOptions raw = o;
+			raw.align = false;  // odometry starts where the truth does
+			csv.push_back({"odometry", report("odometry_", *odometry, truth, raw, windows)});
+		}
+		if (!csvFile.empty()) writeErrorCsv(csvFile, csv);
+
+		std::optional<world::FloorPlan> plan;
+		if (!worldFile.empty()) plan = world::loadFloorPlan(worldFile, "/usr/share");
 		if (!plotFile.empty())
 		{
 			Trajectory aligned = estimate;
 			for (auto& p : aligned) p.pose = se2::compose(s.alignment, p.pose);
-			const Trajectory odometry = odometryFile.empty() ? Trajectory() : readTrajectory(odometryFile);
 			std::vector<PlotSeries> series;
-			if (!odometry.empty()) series.push_back({&odometry, {220, 0, 0}, "odometry", {}});
-			series.push_back({&truth, {0, 160, 0}, "ground truth", {}});
+			if (odometry) series.push_back({&*odometry, {220, 0, 0}, "odometry", {}});
+			series.push_back({&truth, {0, 160, 0}, "ground truth", truthJumps(truth)});
 			series.push_back({&aligned, {0, 60, 220}, o.align ? "estimate (aligned)" : "estimate", {}});
-			std::optional<world::FloorPlan> plan;
-			if (!worldFile.empty()) plan = world::loadFloorPlan(worldFile, "/usr/share");
 			writeTrajectoryPlot(plan ? &*plan : nullptr, series, plotFile);
+		}
+		if (!figuresDir.empty())
+		{
+			RunFigureSources src;
+			src.estimate = &estimate;
+			src.truth = &truth;
+			src.odometry = odometry ? &*odometry : nullptr;
+			src.plan = plan ? &*plan : nullptr;
+			src.runDir = runDir;
+			src.alignment = s.alignment;
+			src.maxGap = o.maxGap;
+			for (const auto& f : writeRunFigures(src, figuresDir)) std::printf("figure: %s\n", f.c_str());
 		}
 		return 0;
 	}

@@ -253,11 +253,12 @@ int CVSlamApp::run()
 	CPathFileWriter pathRbpf(out("log_estimated_path.txt"), CPathFileWriter::Format::RbpfSlam);
 	CPathFileWriter pathTum(out("estimated_path.tum"), CPathFileWriter::Format::Tum);
 	CPathFileWriter pathOdo(out("log_odometry_path.txt"), CPathFileWriter::Format::RbpfSlamOdometry);
+	CPathFileWriter pathOdoTum(out("odometry_path.tum"), CPathFileWriter::Format::Tum);
 	FILE* stepLog = std::fopen(out("log_filter_steps.txt").c_str(), "wt");
 	if (!stepLog) throw InputError("cannot create output file '" + out("log_filter_steps.txt") + "'");
 	std::fprintf(stepLog,
 		"%% step timestamp ESS dual_ratio dual_particles explained_fraction "
-		"hypothesis_support kidnap_declared landmarks measurements_used step_ms\n");
+		"hypothesis_support kidnap_declared landmarks measurements_used step_ms spread_xy spread_phi_deg\n");
 
 	ProgressReporter progress(appOptions.show_progress);
 	InterruptFlag interrupt;
@@ -322,17 +323,22 @@ int CVSlamApp::run()
 			pathRbpf.write(summary.steps, t, est);
 			pathTum.write(summary.steps, t, est);
 			pathOdo.write(summary.steps, t, odo);
+			pathOdoTum.write(summary.steps, t, odo);
 			const long stepIndex = static_cast<long>(summary.steps);
 			estimated.push_back({t, est, stepIndex});
 			odometry.push_back({t, odo, stepIndex});
 			const auto& fr = filter.lastFrame();
 			const bool updated = fr.timestamp == step.timestamp && filter.stats().frames > 0;
-			std::fprintf(stepLog, "%llu %.6f %.4f %.3f %zu %.4f %zu %d %zu %zu %.4f\n",
+			// The particle cloud's spread: weighted standard deviation of the
+			// position (sqrt of the covariance's trace) and of the heading.
+			const Eigen::Matrix3d cov = filter.poseCovariance();
+			std::fprintf(stepLog, "%llu %.6f %.4f %.3f %zu %.4f %zu %d %zu %zu %.4f %.4f %.3f\n",
 				static_cast<unsigned long long>(summary.steps), t, filter.ESS(),
 				updated ? fr.dualRatio : 0.0, updated ? fr.dualParticles : size_t(0),
 				updated ? fr.explainedFraction : 0.0, updated ? fr.hypothesisSupport : size_t(0),
 				updated && fr.kidnapDeclared ? 1 : 0, filter.landmarkIndex().size(),
-				updated ? fr.used : size_t(0), ms);
+				updated ? fr.used : size_t(0), ms, std::sqrt(std::max(0.0, cov(0, 0) + cov(1, 1))),
+				std::sqrt(std::max(0.0, cov(2, 2))) * 180 / M_PI);
 			std::fflush(stepLog);
 			summary.steps++;
 			progress.update(reader.progress(), summary.steps, filter.landmarkIndex().size(),

@@ -7,6 +7,7 @@
  * (xy) errors, raw or after the least-squares SE(2) alignment of the
  * estimate onto the truth. */
 #include <libvslam/eval/Trajectory.h>
+#include <libvslam/eval/TrajectoryAssociation.h>
 
 #include <cstddef>
 
@@ -17,7 +18,9 @@ struct AteStats
 	size_t associated = 0;  //!< estimated poses with ground truth
 	double rmse = 0, mean = 0, median = 0, max = 0;
 	double headingRmse = 0;  //!< rad
-	std::vector<double> errors;  //!< per associated pose, in time order
+	std::vector<double> errors;  //!< xy error per associated pose, in the estimate's order
+	std::vector<double> headingErrors;  //!< signed, rad, per associated pose
+	std::vector<double> times;  //!< the estimate's timestamp per associated pose
 	/** The SE(2) transform applied to the estimate (identity unless
 	 * aligned): estimate pose p is compared as compose(alignment, p). */
 	se2::Pose alignment{0, 0, 0};
@@ -30,9 +33,6 @@ struct AteOptions
 	/** Align the estimate onto the truth with the best SE(2) first. */
 	bool align = false;
 };
-
-/** True if the ground truth has no timestamps (associate by step). */
-bool hasOnlySteps(const Trajectory& groundTruth);
 
 AteStats computeAte(
 	const Trajectory& estimate, const Trajectory& groundTruth,

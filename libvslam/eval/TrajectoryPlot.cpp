@@ -8,7 +8,8 @@
 
 namespace vslam
 {
-void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSeries>& series, const std::string& pngFile)
+void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSeries>& series, const std::string& pngFile,
+	const std::vector<se2::Pose>& landmarks)
 {
 	constexpr double inf = std::numeric_limits<double>::infinity();
 	Eigen::Vector2d lo(inf, inf), hi(-inf, -inf);
@@ -21,7 +22,7 @@ void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSer
 	const double ppm = std::clamp(900 / span, 20.0, 120.0);  // pixels per metre
 	const Eigen::Vector2d origin = lo - Eigen::Vector2d(0.3, 0.3);
 	const int W = static_cast<int>((hi[0] - lo[0] + 0.6) * ppm);
-	const int legend = 18 * static_cast<int>(series.size() + 1);
+	const int legend = 18 * static_cast<int>(series.size() + 2);
 	const int H = static_cast<int>((hi[1] - lo[1] + 0.6) * ppm) + legend;
 	cv::Mat img(H, std::max(W, 320), CV_8UC3, cv::Scalar(255, 255, 255));
 	const auto px = [&](double x, double y) {
@@ -39,6 +40,10 @@ void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSer
 		for (const auto& q : plan->pictures)
 			cv::line(img, px(q.a[0], q.a[1]), px(q.b[0], q.b[1]), cv::Scalar(200, 140, 200), 3);
 	}
+	const cv::Scalar landmarkColour(0, 140, 255);
+	for (const auto& l : landmarks)
+		cv::arrowedLine(img, px(l.x, l.y), px(l.x + 0.25 * std::cos(l.phi), l.y + 0.25 * std::sin(l.phi)),
+			landmarkColour, 2, cv::LINE_AA, 0, 0.4);
 	for (size_t k = 0; k < series.size(); k++)
 	{
 		const auto& s = series[k];
@@ -55,7 +60,15 @@ void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSer
 		cv::line(img, at + cv::Point(0, -4), at + cv::Point(24, -4), colour, 3);
 		cv::putText(img, s.label, at + cv::Point(32, 0), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
 	}
-	const cv::Point bar(8, 16 + 18 * static_cast<int>(series.size()));
+	const int rows = static_cast<int>(series.size()) + (landmarks.empty() ? 0 : 1);
+	if (!landmarks.empty())
+	{
+		const cv::Point at(8, 16 + 18 * static_cast<int>(series.size()));
+		cv::arrowedLine(img, at + cv::Point(0, -4), at + cv::Point(24, -4), landmarkColour, 2, cv::LINE_AA, 0, 0.4);
+		cv::putText(img, "landmarks", at + cv::Point(32, 0), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1,
+			cv::LINE_AA);
+	}
+	const cv::Point bar(8, 16 + 18 * rows);
 	cv::line(img, bar + cv::Point(0, -4), bar + cv::Point(static_cast<int>(ppm), -4), cv::Scalar(0, 0, 0), 2);
 	cv::putText(img, "1 m", bar + cv::Point(static_cast<int>(ppm) + 8, 0), cv::FONT_HERSHEY_SIMPLEX, 0.45,
 		cv::Scalar(0, 0, 0), 1, cv::LINE_AA);

@@ -2,7 +2,7 @@
 /** \file TrajectoryPlot.h
  * Paths drawn over a floor plan as a PNG (the paper's Fig. 2 style):
  * walls and furniture grey, each path in its colour with a legend, jumps
- * (kidnaps) as thin lines, a 1 m scale. Without a floor plan the view
+ * (kidnaps) as thin lines, landmarks as arrows, a 1 m scale. Without a floor plan the view
  * fits the paths. */
 #include <libvslam/eval/Trajectory.h>
 #include <libvslam/world/FloorPlan.h>
@@ -21,5 +21,8 @@ struct PlotSeries
 	std::vector<size_t> jumps;
 };
 
-void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSeries>& series, const std::string& pngFile);
+/** \a landmarks (optional): the map's landmark frames, drawn as small
+ * arrows along their heading (in the frame the paths are drawn in). */
+void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSeries>& series, const std::string& pngFile,
+	const std::vector<se2::Pose>& landmarks = {});
 }  // namespace vslam

@@ -30,8 +30,10 @@ std::optional<LandmarkKind> kindOf(const std::string& token)
 }
 }  // namespace
 
-LandmarkMap readLandmarkMap(const std::string& file, double stdXY, double stdPhi)
+LandmarkMap readLandmarkMap(
+	const std::string& file, double stdXY, double stdPhi, std::vector<uint64_t>* measurements)
 {
+	if (measurements) measurements->clear();
 	std::ifstream in(file);
 	if (!in) throw InputError("cannot read landmark map '" + file + "'");
 	LandmarkMap map;
@@ -85,6 +87,8 @@ LandmarkMap readLandmarkMap(const std::string& file, double stdXY, double stdPhi
 		if (!seen.insert(key).second)
 			throw bad("landmark " + tok[0] + " appears twice");
 		map.push_back({key, l});
+		if (measurements)
+			measurements->push_back(kind && v.size() >= 10 && v[9] >= 0 && v[9] < 1e15 ? uint64_t(v[9]) : 0);
 	}
 	return map;
 }

@@ -25,8 +25,10 @@ using LandmarkMap = std::vector<std::pair<LandmarkKey, LandmarkEstimate>>;
 
 /** Reads a map; rows without covariance get diag(stdXY^2, stdXY^2,
  * stdPhi^2). Throws InputError naming the file and line on a malformed
- * row or a duplicate landmark. */
-LandmarkMap readLandmarkMap(const std::string& file, double stdXY, double stdPhi);
+ * row or a duplicate landmark. With \a measurements, also the number of
+ * measurements of each row (0 where the row has none), in the map's order. */
+LandmarkMap readLandmarkMap(
+	const std::string& file, double stdXY, double stdPhi, std::vector<uint64_t>* measurements = nullptr);
 
 void writeLandmarkMap(
 	const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank);

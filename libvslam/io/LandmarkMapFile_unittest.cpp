@@ -24,9 +24,12 @@ TEST(LandmarkMapFile, WrittenMapsReadBackWithTheirCovariances)
 	bank.push_back(pose);
 	index.add({LandmarkKind::Point, 7}, {});  // same ID, other kind: another landmark
 	bank.push_back(point);
+	index.entry(0).measurements = 34;
 	writeLandmarkMap(dir.file("map.txt"), index, bank);
 
-	const LandmarkMap back = readLandmarkMap(dir.file("map.txt"), 1.0, 1.0);
+	std::vector<uint64_t> measurements;
+	const LandmarkMap back = readLandmarkMap(dir.file("map.txt"), 1.0, 1.0, &measurements);
+	EXPECT_EQ(measurements, (std::vector<uint64_t>{34, 0}));
 	ASSERT_EQ(back.size(), 2u);
 	EXPECT_TRUE((back[0].first == LandmarkKey{LandmarkKind::Pose, 7}));
 	EXPECT_TRUE((back[1].first == LandmarkKey{LandmarkKind::Point, 7}));

@@ -1,0 +1,43 @@
+#pragma once
+/** \file Charts.h
+ * Plain PNG charts for the paper's figures of a run: lines over time (the
+ * position error of vslam and of odometry, its Fig. 4; the particle
+ * cloud's spread and the dual share, with kidnaps marked) and bars (the
+ * measurements per landmark, its Fig. 5). Axes with round ticks, a legend,
+ * optional vertical markers. */
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vslam
+{
+struct ChartSeries
+{
+	std::vector<double> x, y;  //!< same length
+	std::array<uint8_t, 3> rgb{0, 0, 0};
+	std::string label;
+};
+
+struct ChartMarkers
+{
+	std::vector<double> x;  //!< vertical lines at these abscissae
+	std::array<uint8_t, 3> rgb{230, 120, 0};
+	std::string label;
+};
+
+struct ChartOptions
+{
+	std::string title, xLabel, yLabel;
+	std::vector<ChartMarkers> markers;
+	int width = 960, height = 360;
+};
+
+/** Line chart; throws InputError if the file cannot be written. */
+void writeLineChart(const std::vector<ChartSeries>& series, const ChartOptions& options, const std::string& pngFile);
+
+/** Bar chart of \a values at x = 1, 2, ...; throws InputError if the file
+ * cannot be written. */
+void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 3>& rgb, const ChartOptions& options,
+	const std::string& pngFile);
+}  // namespace vslam

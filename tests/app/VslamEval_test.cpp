@@ -1,0 +1,112 @@
+/** vslam-eval as users run it: known errors come out exactly, a vslam run
+ * gets every figure and the error CSV, bad arguments are one clear error. */
+#include <gtest/gtest.h>
+#include <libvslam/eval/Trajectory.h>
+#include <opencv2/imgcodecs.hpp>
+#include <tests/support/RunCommand.h>
+#include <tests/support/TempDir.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using vslam::testing::contains;
+using vslam::testing::runCommand;
+using vslam::testing::TempDir;
+
+namespace
+{
+const std::string kSource = VSLAM_SOURCE_DIR;
+const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+/** The number after `key ` on the line starting with `line:`. */
+double valueOf(const std::string& output, const std::string& line, const std::string& key)
+{
+	std::istringstream in(output);
+	for (std::string l; std::getline(in, l);)
+		if (l.rfind(line + ":", 0) == 0)
+			if (const auto at = l.find(" " + key + " "); at != std::string::npos)
+				return std::stod(l.substr(at + key.size() + 2));
+	return NAN;
+}
+
+size_t lineCount(const std::string& file)
+{
+	std::ifstream in(file);
+	size_t n = 0;
+	for (std::string l; std::getline(in, l);) n++;
+	return n;
+}
+}  // namespace
+
+TEST(VslamEval, AShiftedEstimateHasExactlyItsShiftAsAbsoluteErrorAndNoRelativeError)
+{
+	TempDir dir;
+	vslam::Trajectory truth, shifted;
+	for (int i = 0; i < 300; i++)
+	{
+		const double t = 100 + 0.1 * i, a = 0.02 * i;
+		truth.push_back({t, {std::cos(a), std::sin(a), a + M_PI / 2}});
+		shifted.push_back({t, {std::cos(a) + 0.3, std::sin(a) - 0.4, a + M_PI / 2}});
+	}
+	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
+	vslam::writeTumTrajectory(dir.file("shifted.tum"), shifted);
+	const auto r = runCommand(kBin + "vslam-eval " + q(dir.file("shifted.tum")) + " " + q(dir.file("truth.tum")) +
+		" --rpe-time 2 --rpe-distance 0.5 --csv " + q(dir.file("errors.csv")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate", "rmse"), 0.5, 1e-4) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate", "max"), 0.5, 1e-4) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate_se2_aligned", "rmse"), 0, 1e-4) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "rpe_2s", "trans_max"), 0, 1e-4) << r.output;
+	EXPECT_EQ(valueOf(r.output, "rpe_2s", "pairs"), 280) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "rpe_0.5m", "rot_rmse_deg"), 0, 1e-3) << r.output;
+	EXPECT_EQ(lineCount(dir.file("errors.csv")), 301u);  // header + one row per pose
+}
+
+TEST(VslamEval, AVslamRunGetsEveryFigureAndTheOdometryBesideIt)
+{
+	TempDir dir;
+	const std::string out = dir.file("run");
+	const auto run = runCommand(kBin + "vslam " + q(kSource + "/config_ini/demo_visual.ini") + " --quiet --out " +
+		q(out) + " --set vslam.max_steps=400");
+	ASSERT_EQ(run.exitCode, 0) << run.output;
+	const std::string truth = kSource + "/rawlogs/demo_visual_groundtruth.tum";
+	const auto r = runCommand(kBin + "vslam-eval --run " + q(out) + " " + q(truth) + " --csv " + q(dir.file("e.csv")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	for (const char* line : {"ate", "ate_se2_aligned", "odometry_ate", "odometry_ate_se2_aligned"})
+		EXPECT_EQ(valueOf(r.output, line, "poses"), 400) << line << "\n" << r.output;
+	for (const char* line : {"rpe_1s", "odometry_rpe_1s"})
+		EXPECT_GT(valueOf(r.output, line, "pairs"), 300) << line << "\n" << r.output;
+	// The estimate's ATE is the one the run itself reported.
+	std::ifstream summary(out + "/run_summary.yaml");
+	const std::string yaml((std::istreambuf_iterator<char>(summary)), {});
+	const auto at = yaml.find("  vslam: {associated_poses: 400, rmse: ");
+	ASSERT_NE(at, std::string::npos) << yaml;
+	EXPECT_NEAR(valueOf(r.output, "ate", "rmse"), std::stod(yaml.substr(at + 39)), 1e-4) << r.output;
+	EXPECT_EQ(lineCount(dir.file("e.csv")), 801u);  // estimate and odometry, 400 rows each
+	for (const char* f : {"paths", "error_over_time", "measurements_per_landmark", "particle_spread", "dual_ratio"})
+	{
+		const cv::Mat img = cv::imread(out + "/figures/" + f + ".png");
+		EXPECT_FALSE(img.empty()) << f;
+		EXPECT_GT(img.cols, 300) << f;
+	}
+}
+
+TEST(VslamEval, BadArgumentsAreOneClearError)
+{
+	TempDir dir;
+	vslam::writeTumTrajectory(dir.file("t.tum"), {{1, {0, 0, 0}}, {2, {1, 0, 0}}});
+	const auto zero = runCommand(kBin + "vslam-eval " + q(dir.file("t.tum")) + " " + q(dir.file("t.tum")) +
+		" --rpe-time 0");
+	EXPECT_EQ(zero.exitCode, 1);
+	EXPECT_TRUE(contains(zero.output, "--rpe-time needs a positive number")) << zero.output;
+	const auto typo = runCommand(kBin + "vslam-eval " + q(dir.file("t.tum")) + " " + q(dir.file("t.tum")) +
+		" --rpe-tme 1");
+	EXPECT_EQ(typo.exitCode, 1);
+	EXPECT_TRUE(contains(typo.output, "unknown option '--rpe-tme'")) << typo.output;
+	const auto noRun = runCommand(kBin + "vslam-eval --run " + q(dir.file("nothing")) + " " + q(dir.file("t.tum")));
+	EXPECT_EQ(noRun.exitCode, 3);
+	EXPECT_TRUE(contains(noRun.output, "nothing/estimated_path.tum")) << noRun.output;
+}
