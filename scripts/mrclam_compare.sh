@@ -14,6 +14,7 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="${VSLAM_BIN:-$ROOT/build/bin}"
+source "$ROOT/scripts/lib/peers.sh"
 ARGS=()
 while [[ $# -gt 0 && "$1" != "--" ]]; do ARGS+=("$1"); shift; done
 [[ "${1:-}" == "--" ]] && shift
@@ -48,25 +49,15 @@ for r in $ROBOTS; do
     vals+=("$(rmse "$o/estimated_path.tum" "$gt")")
   done
 
-  # Dead reckoning: vslam's odometry log has the same steps as its path log.
+  # Dead reckoning: vslam writes it beside its estimate, at the same steps.
   o="$base.vslam_s$(awk '{print $1}' <<< "$SEEDS")"
-  paste -d' ' <(awk '{print $8}' "$o/log_estimated_path.txt") "$o/log_odometry_path.txt" |
-    awk '{printf "%s %s %s 0 0 0 %.9f %.9f\n", $1, $3, $4, sin($6/2), cos($6/2)}' > "$base.odometry.tum"
-  dr="$(rmse "$base.odometry.tum" "$gt")"
+  dr="$(rmse "$o/odometry_path.tum" "$gt")"
 
   kf="n/a"
   if command -v kf-slam > /dev/null; then
-    k="$base.kf-slam"
-    rm -rf "$k" && mkdir -p "$k"
-    sed -e "s|^rawlog_file = .*|rawlog_file = $base.rawlog|" -e "s|^logOutput_dir = .*|logOutput_dir = $k|" \
-      "$ROOT/config_ini/peers/kf-slam_mrclam.ini" > "$k.ini"
-    kf-slam "$k.ini" < /dev/null > "$k.log" 2>&1 || true
-    # robot_pose_NNNNN.txt (x, y, phi on three lines) per step; times from vslam's step log.
-    ls "$k"/robot_pose_*.txt 2> /dev/null | sort | xargs -r awk 'FNR==1 && NR>1 {print l; l=""} {l = l (l=="" ? "" : " ") $1} END {if (l!="") print l}' > "$k.poses"
-    paste -d' ' <(awk '{print $8}' "$o/log_estimated_path.txt") "$k.poses" |
-      awk 'NF==4 {printf "%s %s %s 0 0 0 %.9f %.9f\n", $1, $2, $3, sin($4/2), cos($4/2)}' > "$k.tum"
-    [[ -s "$k.tum" ]] && kf="$(rmse "$k.tum" "$gt")"
-    rm -rf "$k"  # thousands of per-step files; the TUM path is kept
+    awk '{print $8}' "$o/log_estimated_path.txt" > "$base.step_times"
+    mkdir -p "$base.peers"
+    kf_slam "$base.rawlog" "$base.peers" "$base.step_times" && kf="$(rmse "$base.peers/kf-slam.tum" "$gt")"
   fi
   printf "| %s | %.2f | %s | %s | %s |\n" "$r" "$dr" "$([[ $kf == n/a ]] && echo n/a || printf %.2f "$kf")" \
     "$(printf "%.2f " "${vals[@]}" | sed 's/ $//')" "$(mean "${vals[@]}")"

@@ -15,6 +15,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="${VSLAM_BIN:-$ROOT/build/bin}"
+source "$ROOT/scripts/lib/peers.sh"
 OUT="${1:?usage: rendered_study.sh OUT_DIR SIMUL_INI... [-- --set ...]}"
 shift
 INIS=()
@@ -32,7 +33,6 @@ while [[ $# -gt 0 ]]; do
 done
 mkdir -p "$OUT"
 VSLAM_INI="$ROOT/config_ini/demo_rendered.ini"
-RBPF_INI="$ROOT/config_ini/peers/rbpf-slam_gridmapping.ini"
 
 rmse() { grep "  $1: " "$2" | sed 's/.* rmse: \([0-9.e-]*\),.*/\1/'; }
 echo "| scenario | images | SIFT per image (median) | inliers consecutive / revisit (median) | measurements accepted | beyond 3 sigma | vslam ATE RMSE [m] | dead reckoning [m] | rbpf-slam (laser, aligned) [m] | front-end + filter [s] | rbpf-slam [s] |"
@@ -63,10 +63,9 @@ for ini in "${INIS[@]}"; do
   naccepted="$(echo "$acc" | awk '{print $3}')"
   beyond="$(echo "$acc" | sed 's/.*deg *\([0-9]*\) (\(.*\))$/\1 (\2)/')"
   v="$(rmse vslam "$d/vslam/run_summary.yaml")" dr="$(rmse dead_reckoning "$d/vslam/run_summary.yaml")"
-  start=$(date +%s.%N)
-  (cd "$d" && rbpf-slam "$RBPF_INI" "$d/sim.rawlog" >> "$log" 2>&1) || { tail -20 "$log" >&2; exit 1; }
-  rbpf_s="$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.0f", b-a}')"
-  r="$("$BIN/vslam-eval" "$d/rbpf-slam_out/log_estimated_path.txt" "$gt" --align | head -n 1 | sed 's/.*rmse \([0-9.]*\).*/\1/')"
+  rbpf_slam "$d/sim.rawlog" "$d" || { tail -20 "$d/rbpf-slam.log" >&2; exit 1; }
+  rbpf_s="$(wall_seconds "$d/rbpf-slam")"
+  r="$("$BIN/vslam-eval" "$d/rbpf-slam.tum" "$gt" --align | head -n 1 | sed 's/.*rmse \([0-9.]*\).*/\1/')"
   "$BIN/vslam-eval" "$d/vslam/estimated_path.tum" "$gt" --odometry "$d/sim_odometry.tum" \
     --world "$(grep -m1 '^world_file' "$ini" | sed 's/.*= *//' | sed "s|^|$(dirname "$ini")/|")" \
     --plot "$d/paths.png" > /dev/null

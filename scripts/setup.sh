@@ -42,6 +42,7 @@ PACKAGES=(
   libopencv-dev libeigen3-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev
+  time
 )
 
 install_packages() {
