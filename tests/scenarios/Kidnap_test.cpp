@@ -6,6 +6,7 @@
  * without them (nominal particles only, no kidnap detection) the filter
  * must not. */
 #include <gtest/gtest.h>
+#include <libvslam/eval/KidnapRecovery.h>
 #include <tests/support/ScenarioRunner.h>
 
 using namespace vslam;
@@ -17,19 +18,6 @@ struct KidnapOutcome
 	int recovered = 0;
 	size_t kidnapsDetected = 0;
 };
-
-/** Seconds from the kidnap until the error stays <= 0.3 m for 5 s, or -1. */
-double recoveryTime(const std::vector<double>& err, size_t kidnap, double dt)
-{
-	const size_t hold = static_cast<size_t>(std::lround(5.0 / dt));
-	for (size_t i = kidnap; i + hold <= err.size(); i++)
-	{
-		bool ok = true;
-		for (size_t j = i; j < i + hold && ok; j++) ok = err[j] <= 0.3;
-		if (ok) return static_cast<double>(i - kidnap) * dt;
-	}
-	return -1;
-}
 
 KidnapOutcome runKidnapSeeds(const TVSlamFilterOptions& opts, const char* label)
 {
@@ -48,8 +36,11 @@ KidnapOutcome runKidnapSeeds(const TVSlamFilterOptions& opts, const char* label)
 		if (r.kidnapIndices.size() != 1) ADD_FAILURE() << "seed " << seed << ": no kidnap simulated";
 		if (r.kidnapIndices.empty()) continue;
 		const size_t k = r.kidnapIndices.front();
-		const double t = recoveryTime(r.filterError, k, o.dt);
-		const bool recovered = t >= 0 && t <= 10;
+		std::vector<double> times;
+		for (size_t i = 0; i < r.filterError.size(); i++) times.push_back(double(i) * o.dt);
+		const auto recovery = recoveryTime(times, r.filterError, times[k]);
+		const double t = recovery.value_or(-1);
+		const bool recovered = recovery && *recovery <= 10;
 		out.recovered += recovered;
 		out.kidnapsDetected += r.stats.kidnapsDetected;
 		std::printf("%s seed %2u: error before %.2f m, after %.2f m, %s (%.1f s)\n", label, seed,
