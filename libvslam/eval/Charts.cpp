@@ -43,7 +43,7 @@ class Canvas
    public:
 	Canvas(const ChartOptions& o, double x0, double x1, double y0, double y1)
 		: m_img(o.height, o.width, CV_8UC3, cv::Scalar(255, 255, 255)),
-		  m_area(70, 44, o.width - 90, o.height - 94),
+		  m_area(70, 44, o.width - 90, o.height - 44 - o.bottomMargin),
 		  m_x0(x0), m_x1(x1 > x0 ? x1 : x0 + 1), m_y0(y0), m_y1(y1 > y0 ? y1 : y0 + 1)
 	{
 		text(m_img, o.title, cv::Point(m_area.x, 18), 0.5);
@@ -122,15 +122,41 @@ void writeLineChart(const std::vector<ChartSeries>& series, const ChartOptions& 
 }
 
 void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 3>& rgb, const ChartOptions& o,
-	const std::string& pngFile)
+	const std::string& pngFile, const std::vector<double>& spreads, const std::vector<std::string>& labels,
+	const std::vector<std::array<uint8_t, 3>>& barColours)
 {
+	const auto spread = [&](size_t i) { return i < spreads.size() && std::isfinite(spreads[i]) ? spreads[i] : 0.0; };
 	double top = 0;
-	for (const double v : values) top = std::max(top, std::isfinite(v) ? v : 0.0);
-	Canvas canvas(o, 0.5, double(values.size()) + 0.5, 0, top * 1.1);
 	for (size_t i = 0; i < values.size(); i++)
+		if (std::isfinite(values[i])) top = std::max(top, values[i] + spread(i));
+	ChartOptions withRoom = o;
+	if (!labels.empty())
+	{
+		const int rows = 14 * int(std::min<size_t>(labels.size(), 4));
+		withRoom.height += rows;
+		withRoom.bottomMargin += rows;
+	}
+	Canvas canvas(withRoom, 0.5, double(values.size()) + 0.5, 0, top * 1.1);
+	for (size_t i = 0; i < values.size(); i++)
+	{
+		const double x = double(i + 1);
 		if (std::isfinite(values[i]) && values[i] > 0)
-			cv::rectangle(canvas.image(), canvas.at(double(i + 1) - 0.4, values[i]), canvas.at(double(i + 1) + 0.4, 0),
-				bgr(rgb), cv::FILLED);
+			cv::rectangle(canvas.image(), canvas.at(x - 0.4, values[i]), canvas.at(x + 0.4, 0),
+				bgr(i < barColours.size() ? barColours[i] : rgb), cv::FILLED);
+		if (spread(i) > 0 && std::isfinite(values[i]))
+		{
+			const cv::Scalar black(0, 0, 0);
+			cv::line(canvas.image(), canvas.at(x, values[i] - spread(i)), canvas.at(x, values[i] + spread(i)), black, 1);
+			for (const double y : {values[i] - spread(i), values[i] + spread(i)})
+				cv::line(canvas.image(), canvas.at(x - 0.1, y), canvas.at(x + 0.1, y), black, 1);
+		}
+		if (i < labels.size())
+		{
+			// Labels in rows under the axis, so neighbours do not overlap.
+			const cv::Point under = canvas.at(x, 0) + cv::Point(-30, 34 + 14 * int(i % 4));
+			text(canvas.image(), labels[i], under, 0.38);
+		}
+	}
 	canvas.write(pngFile);
 }
 }  // namespace vslam

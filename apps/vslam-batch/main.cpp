@@ -1,0 +1,126 @@
+/** vslam-batch: INI-driven experiment batches (doc/experiments.md).
+ *
+ *   vslam-batch BATCH.ini [--jobs N]       run every task here, then the summary
+ *   vslam-batch BATCH.ini --list-tasks     one shell command per task, renders
+ *                                          first: for a cluster's job array
+ *   vslam-batch BATCH.ini --task ID        run one task (what a listed line does)
+ *   vslam-batch BATCH.ini --summary        the summary of what is done so far
+ */
+#include <libvslam/batch/BatchPlan.h>
+#include <libvslam/batch/BatchRunner.h>
+#include <libvslam/batch/BatchSummary.h>
+#include <libvslam/batch/BatchTask.h>
+#include <libvslam/config/ConfigError.h>
+
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+namespace
+{
+const char* kUsage =
+	"Usage: vslam-batch BATCH.ini [--jobs N]    run the batch here (resumes), then the summary\n"
+	"       vslam-batch BATCH.ini --list-tasks  print one command per task (renders first)\n"
+	"       vslam-batch BATCH.ini --task ID     run one task\n"
+	"       vslam-batch BATCH.ini --summary     write the summary of the finished runs\n"
+	"The batch file names scenarios, seeds and a grid of vslam settings; see\n"
+	"config_ini/batches/ and doc/experiments.md. Outputs: OUTPUT_DIR/<scenario>/<variation>/seed<N>/,\n"
+	"OUTPUT_DIR/summary.{md,csv} and summary_ate.png.\n"
+	"Exit codes: 0 ok, 1 usage, 2 batch or vslam configuration error, 3 some task failed.\n";
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+}  // namespace
+
+int main(int argc, const char** argv)
+{
+	using namespace vslam::batch;
+	std::string batchFile, taskId, mode = "run";
+	int jobs = -1;
+	for (int i = 1; i < argc; i++)
+	{
+		const std::string a = argv[i];
+		if (a == "--help" || a == "-h")
+		{
+			std::cout << kUsage;
+			return 0;
+		}
+		if (a == "--list-tasks" || a == "--summary")
+			mode = a.substr(2);
+		else if (a == "--task" && i + 1 < argc)
+			mode = "task", taskId = argv[++i];
+		else if (a == "--jobs" && i + 1 < argc)
+		{
+			const std::string n = argv[++i];
+			if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos || n.size() > 4)
+			{
+				std::cerr << "vslam-batch: error: --jobs needs a whole number, not '" << n << "'\n" << kUsage;
+				return 1;
+			}
+			jobs = std::stoi(n);
+		}
+		else if (a.rfind("--", 0) == 0 || !batchFile.empty())
+		{
+			std::cerr << "vslam-batch: error: unexpected argument '" << a << "'\n" << kUsage;
+			return 1;
+		}
+		else
+			batchFile = a;
+	}
+	if (batchFile.empty())
+	{
+		std::cerr << kUsage;
+		return 1;
+	}
+	try
+	{
+		BatchPlan plan = loadBatchPlan(batchFile);
+		if (jobs > 0) plan.jobs = jobs;
+		const std::string binDir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
+		std::filesystem::create_directories(plan.outputDir);
+		if (mode == "list-tasks")
+		{
+			const std::string self = binDir + "/vslam-batch";
+			for (const auto& t : plan.tasks)
+				std::cout << quoted(self) << " " << quoted(std::filesystem::absolute(batchFile).string()) << " --task "
+						  << quoted(t.id) << "\n";
+			return 0;
+		}
+		if (mode == "task")
+		{
+			const Task* t = plan.find(taskId);
+			if (!t)
+			{
+				std::cerr << "vslam-batch: error: no task '" << taskId << "' in " << batchFile
+						  << " (see --list-tasks)\n";
+				return 1;
+			}
+			const TaskOutcome r = runTask(plan, *t, binDir);
+			std::cout << t->id << ": " << (r.ok ? "" : "FAILED: ") << r.message << "\n";
+			return r.ok ? 0 : 3;
+		}
+		BatchOutcome outcome;
+		if (mode == "run")
+		{
+			std::cout << "vslam-batch: " << plan.tasks.size() << " tasks (" << plan.scenarios.size() << " scenarios, "
+					  << plan.variations.size() << " variations, " << plan.seeds.size() << " seeds), " << plan.jobs
+					  << " at a time -> " << plan.outputDir << "\n";
+			outcome = runBatch(plan, binDir, [](const std::string& line) { std::cout << line << std::endl; });
+		}
+		std::cout << "\n" << writeBatchSummary(plan) << "\nvslam-batch: " << plan.outputDir << "/summary.md, summary.csv, summary_ate.png";
+		if (mode == "run")
+			std::cout << "; " << outcome.done << " run, " << outcome.skipped << " done before, " << outcome.failed
+					  << " failed";
+		std::cout << "\n";
+		return outcome.failed ? 3 : 0;
+	}
+	catch (const vslam::ConfigError& e)
+	{
+		std::cerr << "vslam-batch: error: " << e.what() << "\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "vslam-batch: error: " << e.what() << "\n";
+		return 3;
+	}
+}

@@ -1,0 +1,295 @@
+#include <libvslam/app/CVSlamApp.h>
+#include <libvslam/batch/BatchPlan.h>
+#include <libvslam/config/ConfigError.h>
+#include <libvslam/config/KeyValidation.h>
+#include <libvslam/config/Overrides.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace fs = std::filesystem;
+
+namespace vslam::batch
+{
+namespace
+{
+constexpr const char* kScenarioPrefix = "scenario:";
+
+/** Whitespace-separated words, or with a separator the trimmed non-empty
+ * items between separators. */
+std::vector<std::string> words(const std::string& text, char separator = 0)
+{
+	std::vector<std::string> out;
+	std::istringstream in(text);
+	std::string item;
+	if (!separator)
+	{
+		while (in >> item) out.push_back(item);
+		return out;
+	}
+	while (std::getline(in, item, separator))
+	{
+		item.erase(0, item.find_first_not_of(" \t"));
+		item.erase(item.find_last_not_of(" \t") + 1);
+		if (!item.empty()) out.push_back(item);
+	}
+	return out;
+}
+
+/** "1 2 5" or "1-20" or a mix ("1-5 9"). */
+std::vector<int> parseSeeds(const std::string& text, const std::string& where)
+{
+	std::vector<int> seeds;
+	for (const auto& w : words(text))
+	{
+		const auto dash = w.find('-', 1);
+		try
+		{
+			size_t used = 0;
+			const int a = std::stoi(w.substr(0, dash), &used);
+			if (used != (dash == std::string::npos ? w.size() : dash)) throw std::invalid_argument(w);
+			int b = a;
+			if (dash != std::string::npos)
+			{
+				b = std::stoi(w.substr(dash + 1), &used);
+				if (used != w.size() - dash - 1) throw std::invalid_argument(w);
+			}
+			if (a < 0 || b < a || b - a > 100000) throw std::invalid_argument(w);
+			for (int s = a; s <= b; s++) seeds.push_back(s);
+		}
+		catch (const std::exception&)
+		{
+			throw ConfigError(where + ": '" + w + "' is not a seed or a range of seeds (e.g. 1-20)");
+		}
+	}
+	if (seeds.empty()) throw ConfigError(where + ": no seeds");
+	std::sort(seeds.begin(), seeds.end());
+	if (std::adjacent_find(seeds.begin(), seeds.end()) != seeds.end())
+		throw ConfigError(where + ": a seed is given twice");
+	return seeds;
+}
+
+class BatchFile
+{
+   public:
+	explicit BatchFile(const std::string& file) : m_file(file)
+	{
+		m_cfg = config::parseIniWithOverrides(config::readIniFile(file), {});
+	}
+
+	std::string where(const std::string& section, const std::string& key = "") const
+	{
+		return "batch '" + m_file + "', [" + section + "]" + (key.empty() ? "" : " " + key);
+	}
+
+	/** Throws naming the first key of \a section not in \a allowed. */
+	void onlyKeys(const std::string& section, const std::vector<std::string>& allowed) const
+	{
+		std::vector<std::string> keys;
+		m_cfg.getAllKeys(section, keys);
+		for (const auto& k : keys)
+			if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
+			{
+				const std::string close = config::closestMatch(k, allowed);
+				throw ConfigError(where(section, k) + ": unknown key" +
+					(close.empty() ? "" : " (did you mean '" + close + "'?)"));
+			}
+	}
+
+	std::string text(const std::string& section, const std::string& key) const
+	{
+		return m_cfg.read_string(section, key, "", false);
+	}
+
+	/** A path relative to the batch file's folder, made absolute; must
+	 * exist if asked. */
+	std::string path(const std::string& section, const std::string& key, bool mustExist) const
+	{
+		const std::string value = text(section, key);
+		if (value.empty()) return "";
+		const fs::path p = fs::path(value).is_absolute() ? fs::path(value) : fs::path(m_file).parent_path() / value;
+		if (mustExist && !fs::exists(p)) throw ConfigError(where(section, key) + ": no file '" + p.string() + "'");
+		return fs::absolute(p).lexically_normal().string();  // the programs run elsewhere
+	}
+
+	std::vector<std::string> sections() const
+	{
+		std::vector<std::string> s;
+		m_cfg.getAllSections(s);
+		return s;
+	}
+
+	std::vector<std::string> keys(const std::string& section) const
+	{
+		std::vector<std::string> k;
+		m_cfg.getAllKeys(section, k);
+		return k;
+	}
+
+   private:
+	std::string m_file;
+	mrpt::config::CConfigFileMemory m_cfg;
+};
+
+/** Loads the variation's vslam configuration exactly as vslam would: an
+ * unknown key or a bad value is found before anything runs. */
+void checkVslamConfig(const Scenario& s, const Variation& v, const std::string& where)
+{
+	std::vector<std::string> args{"vslam", s.vslamIni, "(rawlog)"};
+	for (const auto& list : {s.vslamSet, v.set})
+		for (const auto& kv : list) args.insert(args.end(), {"--set", kv});
+	std::vector<const char*> argv;
+	for (const auto& a : args) argv.push_back(a.c_str());
+	try
+	{
+		CVSlamApp app;
+		app.initialize(int(argv.size()), argv.data());
+	}
+	catch (const std::exception& e)
+	{
+		throw ConfigError(where + ": " + e.what());
+	}
+}
+
+std::vector<Variation> expandGrid(const BatchFile& f)
+{
+	// Every combination of the grid's values, the first key varying slowest.
+	std::vector<Variation> out{Variation{}};
+	for (const auto& key : f.keys("grid"))
+	{
+		const auto values = words(f.text("grid", key));
+		if (values.empty()) throw ConfigError(f.where("grid", key) + ": no values");
+		std::vector<Variation> next;
+		for (const auto& v : out)
+			for (const auto& value : values)
+			{
+				Variation w = v;
+				w.set.push_back(key + "=" + value);
+				next.push_back(w);
+			}
+		out = next;
+	}
+	for (size_t i = 0; i < out.size(); i++)
+	{
+		char name[24];
+		std::snprintf(name, sizeof name, "v%02zu", i + 1);
+		out[i].name = name;
+	}
+	return out;
+}
+}  // namespace
+
+std::string Variation::label() const
+{
+	if (set.empty()) return "defaults";
+	std::string s;
+	for (const auto& kv : set) s += (s.empty() ? "" : ", ") + kv;
+	return s;
+}
+
+std::string BatchPlan::rawlogOf(const Scenario& s, int seed) const
+{
+	if (s.simulIni.empty()) return s.rawlog;
+	return (fs::path(outputDir) / s.name / ("data_seed" + std::to_string(seed)) / "sim.rawlog").string();
+}
+
+std::string BatchPlan::groundTruthOf(const Scenario& s, int seed) const
+{
+	if (s.simulIni.empty()) return s.groundTruth;
+	return (fs::path(outputDir) / s.name / ("data_seed" + std::to_string(seed)) / "sim_groundtruth.tum").string();
+}
+
+const Task* BatchPlan::find(const std::string& id) const
+{
+	for (const auto& t : tasks)
+		if (t.id == id) return &t;
+	return nullptr;
+}
+
+BatchPlan loadBatchPlan(const std::string& batchFile)
+{
+	if (!fs::is_regular_file(batchFile)) throw ConfigError("no batch file '" + batchFile + "'");
+	const BatchFile f(batchFile);
+	BatchPlan plan;
+	plan.batchFile = batchFile;
+	for (const auto& section : f.sections())
+		if (section != "batch" && section != "grid" && section.rfind(kScenarioPrefix, 0) != 0)
+			throw ConfigError("batch '" + batchFile + "': unknown section [" + section +
+				"] (expected [batch], [grid] and [scenario:NAME] sections)");
+
+	f.onlyKeys("batch", {"output_dir", "seeds", "jobs", "vslam_ini", "set"});
+	plan.outputDir = f.path("batch", "output_dir", false);
+	if (plan.outputDir.empty()) throw ConfigError(f.where("batch", "output_dir") + ": missing");
+	plan.seeds = parseSeeds(f.text("batch", "seeds"), f.where("batch", "seeds"));
+	const std::string jobs = f.text("batch", "jobs");
+	try
+	{
+		size_t used = 0;
+		plan.jobs = jobs.empty() ? 0 : std::stoi(jobs, &used);
+		if (!jobs.empty() && used != jobs.size()) throw std::invalid_argument(jobs);
+	}
+	catch (const std::exception&)
+	{
+		throw ConfigError(f.where("batch", "jobs") + ": '" + jobs + "' is not a whole number");
+	}
+	if (plan.jobs < 0 || plan.jobs > 1024) throw ConfigError(f.where("batch", "jobs") + ": must be in [0, 1024]");
+	if (plan.jobs == 0) plan.jobs = int(std::max(1u, std::thread::hardware_concurrency()));
+	const std::string defaultVslamIni = f.path("batch", "vslam_ini", true);
+	const auto batchSet = words(f.text("batch", "set"), ';');
+
+	for (const auto& section : f.sections())
+	{
+		if (section.rfind(kScenarioPrefix, 0) != 0) continue;
+		f.onlyKeys(section, {"simul_ini", "simul_set", "rawlog", "ground_truth", "vslam_ini", "set", "world"});
+		Scenario s;
+		s.name = section.substr(std::string(kScenarioPrefix).size());
+		if (s.name.empty() || s.name.find_first_of("/ \t") != std::string::npos)
+			throw ConfigError("batch '" + batchFile + "': [" + section + "] needs a name without '/' or spaces");
+		s.simulIni = f.path(section, "simul_ini", true);
+		s.simulSet = words(f.text(section, "simul_set"), ';');
+		s.rawlog = f.path(section, "rawlog", true);
+		s.groundTruth = f.path(section, "ground_truth", true);
+		if (s.simulIni.empty() == s.rawlog.empty())
+			throw ConfigError(f.where(section) + ": give either simul_ini or rawlog (with ground_truth)");
+		if (!s.rawlog.empty() && s.groundTruth.empty())
+			throw ConfigError(f.where(section, "ground_truth") + ": missing (the runs are scored against it)");
+		s.vslamIni = f.path(section, "vslam_ini", true);
+		if (s.vslamIni.empty()) s.vslamIni = defaultVslamIni;
+		if (s.vslamIni.empty())
+			throw ConfigError(f.where(section, "vslam_ini") + ": missing here and in [batch]");
+		s.vslamSet = batchSet;
+		for (const auto& kv : words(f.text(section, "set"), ';')) s.vslamSet.push_back(kv);
+		s.world = f.path(section, "world", true);
+		plan.scenarios.push_back(s);
+	}
+	if (plan.scenarios.empty()) throw ConfigError("batch '" + batchFile + "': no [scenario:NAME] section");
+	plan.variations = expandGrid(f);
+	for (const auto& s : plan.scenarios)
+		for (const auto& v : plan.variations)
+			checkVslamConfig(s, v, f.where("scenario:" + s.name) + ", variation " + v.label());
+
+	for (size_t si = 0; si < plan.scenarios.size(); si++)
+	{
+		const Scenario& s = plan.scenarios[si];
+		if (s.simulIni.empty()) continue;
+		for (const int seed : plan.seeds)
+			plan.tasks.push_back({Task::Kind::Render, si, 0, seed, "render/" + s.name + "/seed" + std::to_string(seed),
+				fs::path(plan.rawlogOf(s, seed)).parent_path().string()});
+	}
+	for (size_t si = 0; si < plan.scenarios.size(); si++)
+		for (size_t vi = 0; vi < plan.variations.size(); vi++)
+			for (const int seed : plan.seeds)
+			{
+				const std::string tail =
+					plan.scenarios[si].name + "/" + plan.variations[vi].name + "/seed" + std::to_string(seed);
+				plan.tasks.push_back({Task::Kind::Run, si, vi, seed, "run/" + tail,
+					(fs::path(plan.outputDir) / tail).string()});
+			}
+	return plan;
+}
+}  // namespace vslam::batch

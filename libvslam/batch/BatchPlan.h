@@ -1,0 +1,81 @@
+#pragma once
+/** \file BatchPlan.h
+ * An experiment batch from one INI file (vslam-batch; doc/experiments.md):
+ *
+ *   [batch]
+ *   output_dir = ../../batch_out/paper   ; paths relative to this file
+ *   seeds = 1-20                         ; or a list: 1 2 3
+ *   jobs = 0                             ; runs at a time; 0: one per core
+ *   vslam_ini = ../demo_rendered.ini     ; vslam's configuration
+ *   set = vslam_particle_filter.sampleSize=200 ; ... for every run
+ *
+ *   [scenario:living_room]               ; one section per data source:
+ *   simul_ini = ../simul_living_room.ini ; rendered per seed (vslam_simul.seed), or
+ *   rawlog = ...  ground_truth = ...     ; fixed data (the seed varies vslam only)
+ *   simul_set = vslam_simul.duration=300 ; simulator overrides
+ *   vslam_ini = ...  set = ...           ; per-scenario vslam overrides
+ *
+ *   [grid]                               ; vslam keys, values separated by spaces:
+ *   vslam_particle_filter.sampleSize = 100 200 400   ; every combination is a variation
+ *                                        ; (keys in alphabetical order, the first varying slowest)
+ *
+ * The plan is the list of tasks: rendering each simulated scenario once per
+ * seed, then one vslam run per scenario, variation and seed. */
+#include <string>
+#include <vector>
+
+namespace vslam::batch
+{
+struct Scenario
+{
+	std::string name;
+	std::string simulIni;  //!< rendered per seed, or empty
+	std::vector<std::string> simulSet;
+	std::string rawlog, groundTruth;  //!< fixed data (when no simulIni)
+	std::string vslamIni;
+	std::vector<std::string> vslamSet;  //!< the batch's `set`, then the scenario's
+	std::string world;  //!< floor plan for the figures (optional)
+};
+
+struct Variation
+{
+	std::string name;  //!< "v01", ... in grid order
+	std::vector<std::string> set;  //!< SECTION.KEY=VALUE
+	std::string label() const;  //!< "key=value, key=value" or "defaults"
+};
+
+struct Task
+{
+	enum class Kind
+	{
+		Render,
+		Run
+	};
+	Kind kind = Kind::Run;
+	size_t scenario = 0;  //!< index in BatchPlan::scenarios
+	size_t variation = 0;  //!< index in BatchPlan::variations (Run only)
+	int seed = 0;
+	std::string id;  //!< "render/living_room/seed3", "run/living_room/v02/seed3"
+	std::string dir;  //!< its output folder
+};
+
+struct BatchPlan
+{
+	std::string batchFile, outputDir;
+	std::vector<int> seeds;
+	int jobs = 0;
+	std::vector<Scenario> scenarios;
+	std::vector<Variation> variations;
+	std::vector<Task> tasks;  //!< every Render before every Run
+
+	/** The rawlog and ground truth a run of \a scenario with \a seed reads. */
+	std::string rawlogOf(const Scenario& scenario, int seed) const;
+	std::string groundTruthOf(const Scenario& scenario, int seed) const;
+	const Task* find(const std::string& id) const;
+};
+
+/** Reads and checks a batch file: unknown sections or keys, missing files,
+ * bad seeds and every variation's vslam configuration (loaded as vslam
+ * would) are ConfigErrors naming the file, section and key. */
+BatchPlan loadBatchPlan(const std::string& batchFile);
+}  // namespace vslam::batch

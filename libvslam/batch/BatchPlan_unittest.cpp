@@ -1,0 +1,93 @@
+#include <gtest/gtest.h>
+#include <libvslam/batch/BatchPlan.h>
+#include <libvslam/config/ConfigError.h>
+#include <tests/support/TempDir.h>
+
+#include <fstream>
+
+using namespace vslam::batch;
+using vslam::testing::TempDir;
+
+namespace
+{
+const std::string kSource = VSLAM_SOURCE_DIR;
+
+/** A batch file in \a dir with fixed data from the repository. */
+std::string writeBatch(const TempDir& dir, const std::string& batchSection, const std::string& rest)
+{
+	const std::string file = dir.file("batch.ini");
+	std::ofstream(file) << "[batch]\noutput_dir = out\nvslam_ini = " << kSource << "/config_ini/demo_visual.ini\n"
+						<< batchSection << "\n[scenario:demo]\nrawlog = " << kSource
+						<< "/rawlogs/demo_visual.rawlog\nground_truth = " << kSource
+						<< "/rawlogs/demo_visual_groundtruth.tum\n"
+						<< rest;
+	return file;
+}
+
+std::string errorOf(const std::string& file)
+{
+	try
+	{
+		loadBatchPlan(file);
+	}
+	catch (const vslam::ConfigError& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+}  // namespace
+
+TEST(BatchPlan, TheGridTimesTheSeedsGivesTheRunsInOrder)
+{
+	TempDir dir;
+	const auto plan = loadBatchPlan(writeBatch(dir, "seeds = 1-3 7",
+		"[grid]\nvslam_particle_filter.sampleSize = 50 100\nvslam_mixture_proposal.dual_ratio = 0 0.1 0.2\n"));
+	EXPECT_EQ(plan.seeds, (std::vector<int>{1, 2, 3, 7}));
+	ASSERT_EQ(plan.variations.size(), 6u);
+	// Keys in alphabetical order, the first varying slowest.
+	EXPECT_EQ(plan.variations[0].label(), "vslam_mixture_proposal.dual_ratio=0, vslam_particle_filter.sampleSize=50");
+	EXPECT_EQ(plan.variations[1].label(), "vslam_mixture_proposal.dual_ratio=0, vslam_particle_filter.sampleSize=100");
+	EXPECT_EQ(plan.variations[5].label(), "vslam_mixture_proposal.dual_ratio=0.2, vslam_particle_filter.sampleSize=100");
+	EXPECT_EQ(plan.variations[5].name, "v06");
+	ASSERT_EQ(plan.tasks.size(), 24u);  // fixed data: no rendering
+	EXPECT_EQ(plan.tasks[0].id, "run/demo/v01/seed1");
+	EXPECT_EQ(plan.tasks[23].id, "run/demo/v06/seed7");
+	EXPECT_EQ(plan.tasks[23].dir, dir.file("out/demo/v06/seed7"));  // relative to the batch file
+	EXPECT_GE(plan.jobs, 1);  // 0: one per core
+}
+
+TEST(BatchPlan, SimulatedScenariosAreRenderedOncePerSeedBeforeAnyRun)
+{
+	TempDir dir;
+	const auto plan = loadBatchPlan(writeBatch(dir, "seeds = 1 2",
+		"[scenario:room]\nsimul_ini = " + kSource + "/config_ini/simul_demo.ini\nsimul_set = vslam_simul.duration=20\n"
+			"vslam_ini = " + kSource + "/config_ini/demo_rendered.ini\n[grid]\nvslam_particle_filter.sampleSize = 50 100\n"));
+	ASSERT_EQ(plan.tasks.size(), 2u + 2 * 2 * 2);
+	EXPECT_EQ(plan.tasks[0].id, "render/room/seed1");
+	EXPECT_EQ(plan.tasks[1].id, "render/room/seed2");
+	for (size_t i = 2; i < plan.tasks.size(); i++) EXPECT_EQ(plan.tasks[i].kind, Task::Kind::Run);
+	const Scenario& room = plan.scenarios[1];
+	EXPECT_EQ(plan.rawlogOf(room, 2), dir.file("out/room/data_seed2/sim.rawlog"));
+	EXPECT_EQ(room.simulSet, (std::vector<std::string>{"vslam_simul.duration=20"}));
+}
+
+TEST(BatchPlan, MistakesAreConfigErrorsNamingTheSectionAndKey)
+{
+	TempDir dir;
+	const auto expectError = [&](const std::string& batchSection, const std::string& rest, const std::string& what) {
+		const std::string e = errorOf(writeBatch(dir, batchSection, rest));
+		EXPECT_NE(e.find(what), std::string::npos) << "expected '" << what << "' in: " << e;
+	};
+	expectError("seeds = 1\nsed = 3", "", "[batch] sed: unknown key (did you mean 'set'?)");
+	expectError("seeds = 1", "[grids]\n", "unknown section [grids]");
+	expectError("seeds = 3-1", "", "'3-1' is not a seed");
+	expectError("seeds = 1 1", "", "a seed is given twice");
+	expectError("seeds = 1\njobs = many", "", "'many' is not a whole number");
+	expectError("seeds = 1", "[scenario:other]\nrawlog = nowhere.rawlog\n", "[scenario:other] rawlog: no file");
+	expectError("seeds = 1", "[scenario:other]\nground_truth = " + kSource + "/rawlogs/demo_visual_groundtruth.tum\n",
+		"give either simul_ini or rawlog");
+	// vslam's own checks, before anything runs: a misspelt key in the grid.
+	expectError("seeds = 1", "[grid]\nvslam_particle_filter.sampleSise = 50 100\n", "sampleSise");
+	expectError("seeds = 1", "[grid]\nvslam_particle_filter.sampleSize = 50 -3\n", "sampleSize=-3");
+}

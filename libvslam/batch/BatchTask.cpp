@@ -1,0 +1,160 @@
+#include <libvslam/batch/BatchTask.h>
+#include <libvslam/batch/ProcessRun.h>
+#include <libvslam/core/InputError.h>
+#include <libvslam/eval/AbsoluteTrajectoryError.h>
+#include <libvslam/eval/KidnapRecovery.h>
+#include <libvslam/eval/RelativePoseError.h>
+#include <libvslam/eval/RunFigures.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace vslam::batch
+{
+namespace
+{
+std::string joined(const std::vector<std::string>& args)
+{
+	std::string s;
+	for (const auto& a : args) s += (s.empty() ? "" : " ") + a;
+	return s;
+}
+
+std::string readText(const std::string& file)
+{
+	std::ifstream in(file);
+	return {std::istreambuf_iterator<char>(in), {}};
+}
+
+/** The value after "key: " in a YAML-ish summary, or NaN. */
+double yamlNumber(const std::string& yaml, const std::string& key)
+{
+	const auto at = yaml.find(key + ": ");
+	return at == std::string::npos ? NAN : std::atof(yaml.c_str() + at + key.size() + 2);
+}
+
+Metrics scoreRun(const BatchPlan& plan, const Task& task, const ProcessResult& process)
+{
+	const Scenario& s = plan.scenarios[task.scenario];
+	const std::string out = task.dir + "/vslam";
+	const Trajectory estimate = readTrajectory(out + "/estimated_path.tum");
+	const Trajectory odometry = readTrajectory(out + "/odometry_path.tum");
+	const Trajectory truth = readTrajectory(plan.groundTruthOf(s, task.seed));
+	Metrics m;
+	AteOptions raw, aligned;
+	aligned.align = true;
+	const AteStats ate = computeAte(estimate, truth, raw), ateAligned = computeAte(estimate, truth, aligned);
+	if (ate.associated == 0) throw InputError("no pose of the estimate has ground truth at its time");
+	m["ate_rmse"] = ate.rmse;
+	m["ate_mean"] = ate.mean;
+	m["ate_median"] = ate.median;
+	m["ate_max"] = ate.max;
+	m["ate_aligned_rmse"] = ateAligned.rmse;
+	m["heading_rmse_deg"] = ate.headingRmse * 180 / M_PI;
+	const RpeStats rpe = computeRpe(estimate, truth);
+	m["rpe_1s_rmse"] = rpe.translation.rmse;
+	m["rpe_1s_rot_rmse_deg"] = rpe.rotation.rmse * 180 / M_PI;
+	const AteStats odo = computeAte(odometry, truth, raw);
+	m["odometry_ate_rmse"] = odo.rmse;
+	m["odometry_ate_median"] = odo.median;
+	m["odometry_ate_mean"] = odo.mean;
+	// Kidnaps: the ground truth jumps while the run lasts; recovered within
+	// 10 s (results.md section 2).
+	double kidnaps = 0, recovered = 0, worst = 0;
+	for (const size_t i : truthJumps(truth))
+	{
+		if (truth[i].t > ate.times.back()) continue;
+		kidnaps++;
+		const auto t = recoveryTime(ate.times, ate.errors, truth[i].t);
+		if (t && *t <= 10) recovered++;
+		worst = std::max(worst, t ? *t : INFINITY);
+	}
+	m["kidnaps"] = kidnaps;
+	m["kidnaps_recovered_10s"] = recovered;
+	if (kidnaps > 0) m["recovery_s_worst"] = worst;
+	const std::string yaml = readText(out + "/run_summary.yaml");
+	m["kidnaps_declared"] = yamlNumber(yaml, "kidnaps_detected");
+	m["landmarks"] = yamlNumber(yaml, "total");
+	m["data_s"] = yamlNumber(yaml, "data_seconds");
+	m["wall_s"] = process.wallSeconds;
+	m["peak_mib"] = process.peakMiB;
+	m["real_time_factor"] = process.wallSeconds > 0 ? m["data_s"] / process.wallSeconds : NAN;
+	return m;
+}
+}  // namespace
+
+std::vector<std::string> taskCommand(const BatchPlan& plan, const Task& task, const std::string& binDir)
+{
+	const Scenario& s = plan.scenarios[task.scenario];
+	const std::string seed = std::to_string(task.seed);
+	std::vector<std::string> args;
+	if (task.kind == Task::Kind::Render)
+	{
+		args = {binDir + "/vslam-simul", s.simulIni, plan.rawlogOf(s, task.seed), "--quiet", "--set",
+			"vslam_simul.seed=" + seed};
+		for (const auto& kv : s.simulSet) args.insert(args.end(), {"--set", kv});
+		return args;
+	}
+	args = {binDir + "/vslam", s.vslamIni, plan.rawlogOf(s, task.seed), "--out", task.dir + "/vslam", "--quiet",
+		"--set", "vslam.RANDOM_SEED=" + seed, "--set", "vslam.ground_truth_file=" + plan.groundTruthOf(s, task.seed)};
+	for (const auto& list : {s.vslamSet, plan.variations[task.variation].set})
+		for (const auto& kv : list) args.insert(args.end(), {"--set", kv});
+	return args;
+}
+
+Metrics readMetrics(const std::string& file)
+{
+	Metrics m;
+	std::ifstream in(file);
+	std::string key, value;
+	while (in >> key >> value) m[key] = std::strtod(value.c_str(), nullptr);  // also "inf", "nan"
+	return m;
+}
+
+TaskOutcome runTask(const BatchPlan& plan, const Task& task, const std::string& binDir)
+{
+	const std::vector<std::string> command = taskCommand(plan, task, binDir);
+	const std::string doneFile = task.dir + "/done", logFile = task.dir + "/log.txt";
+	TaskOutcome outcome;
+	if (fs::exists(doneFile) && readText(doneFile) == joined(command) + "\n")
+	{
+		outcome.ok = outcome.skipped = true;
+		outcome.message = "done before";
+		return outcome;
+	}
+	std::error_code ec;
+	fs::remove_all(task.dir, ec);  // a partial or different earlier attempt
+	fs::create_directories(task.dir, ec);
+	if (ec) return {false, false, "cannot create '" + task.dir + "': " + ec.message()};
+	std::ofstream(logFile) << joined(command) << "\n";
+	const ProcessResult process = runProcess(command, logFile);
+	if (!process.ok()) return {false, false, process.describe() + ", see " + logFile};
+	if (task.kind == Task::Kind::Run)
+	{
+		try
+		{
+			const Metrics m = scoreRun(plan, task, process);
+			std::ofstream metrics(task.dir + "/metrics.txt");
+			for (const auto& [k, v] : m) metrics << k << " " << v << "\n";
+			char line[160];
+			std::snprintf(line, sizeof line, "ATE %.3f m (odometry %.3f m), %.1f s", m.at("ate_rmse"),
+				m.at("odometry_ate_rmse"), process.wallSeconds);
+			outcome.message = line;
+		}
+		catch (const std::exception& e)
+		{
+			return {false, false, std::string("scoring failed: ") + e.what()};
+		}
+	}
+	else
+		outcome.message = "rendered in " + std::to_string(int(process.wallSeconds)) + " s";
+	std::ofstream(doneFile) << joined(command) << "\n";
+	outcome.ok = true;
+	return outcome;
+}
+}  // namespace vslam::batch

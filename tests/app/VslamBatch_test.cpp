@@ -1,0 +1,112 @@
+/** vslam-batch as users run it: a grid over seeds in parallel, the summary,
+ * resuming, one task at a time (the cluster path), and failures reported
+ * without stopping the rest. */
+#include <gtest/gtest.h>
+#include <tests/support/RunCommand.h>
+#include <tests/support/TempDir.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using vslam::testing::contains;
+using vslam::testing::readFile;
+using vslam::testing::runCommand;
+using vslam::testing::TempDir;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kSource = VSLAM_SOURCE_DIR;
+const std::string kBatch = std::string(VSLAM_BINARY_DIR) + "/bin/vslam-batch ";
+
+/** Two seeds x two particle counts on the demo's measurement rawlog (300
+ * steps), plus, if asked, a scenario whose rawlog is corrupt. */
+std::string writeBatch(const TempDir& dir, bool withBadScenario)
+{
+	const std::string file = dir.file("batch.ini");
+	std::ofstream f(file);
+	f << "[batch]\noutput_dir = out\nseeds = 1 2\njobs = 2\nvslam_ini = " << kSource
+	  << "/config_ini/demo_visual.ini\nset = vslam.max_steps=300\n"
+	  << "[scenario:demo]\nrawlog = " << kSource << "/rawlogs/demo_visual.rawlog\nground_truth = " << kSource
+	  << "/rawlogs/demo_visual_groundtruth.tum\n"
+	  << "[grid]\nvslam_particle_filter.sampleSize = 30 60\n";
+	if (withBadScenario)
+	{
+		std::ofstream(dir.file("bad.rawlog")) << "not a rawlog\n";
+		f << "[scenario:bad]\nrawlog = bad.rawlog\nground_truth = " << kSource
+		  << "/rawlogs/demo_visual_groundtruth.tum\n";
+	}
+	return file;
+}
+
+size_t countLines(const std::string& text, const std::string& part)
+{
+	std::istringstream in(text);
+	size_t n = 0;
+	for (std::string l; std::getline(in, l);) n += contains(l, part);
+	return n;
+}
+}  // namespace
+
+TEST(VslamBatch, RunsTheGridSummarizesAndResumes)
+{
+	TempDir dir;
+	const std::string batch = writeBatch(dir, false);
+	const auto first = runCommand(kBatch + "'" + batch + "'");
+	ASSERT_EQ(first.exitCode, 0) << first.output;
+	EXPECT_TRUE(contains(first.output, "4 run, 0 done before, 0 failed")) << first.output;
+	const std::string summary = readFile(dir.file("out/summary.md"));
+	EXPECT_EQ(countLines(summary, "| demo | v0"), 2u) << summary;
+	EXPECT_EQ(countLines(summary, "| 2 / 2 |"), 2u) << summary;
+	EXPECT_TRUE(fs::exists(dir.file("out/summary_ate.png")));
+	// One CSV row per run, with its seed and metrics.
+	EXPECT_EQ(countLines(readFile(dir.file("out/summary.csv")), "demo,v0"), 4u);
+	const std::string metrics = readFile(dir.file("out/demo/v02/seed2/metrics.txt"));
+	EXPECT_TRUE(contains(metrics, "ate_rmse ")) << metrics;
+	EXPECT_TRUE(contains(readFile(dir.file("out/demo/v02/seed2/vslam/config_used.ini")), "sampleSize = 60"));
+
+	// Resume: an unfinished run (no done file) runs again, the rest not.
+	const std::string path = readFile(dir.file("out/demo/v01/seed1/vslam/estimated_path.tum"));
+	fs::remove(dir.file("out/demo/v01/seed1/done"));
+	const auto again = runCommand(kBatch + "'" + batch + "'");
+	ASSERT_EQ(again.exitCode, 0) << again.output;
+	EXPECT_TRUE(contains(again.output, "1 run, 3 done before, 0 failed")) << again.output;
+	EXPECT_EQ(readFile(dir.file("out/demo/v01/seed1/vslam/estimated_path.tum")), path);  // same seed, same run
+}
+
+TEST(VslamBatch, ListedTasksRunOneByOneAsOnACluster)
+{
+	TempDir dir;
+	const std::string batch = writeBatch(dir, false);
+	const auto list = runCommand(kBatch + "'" + batch + "' --list-tasks");
+	ASSERT_EQ(list.exitCode, 0) << list.output;
+	EXPECT_EQ(countLines(list.output, " --task 'run/demo/"), 4u) << list.output;
+	// Each line is a complete shell command: run them as a job array would.
+	std::istringstream lines(list.output);
+	for (std::string line; std::getline(lines, line);)
+		if (contains(line, "--task"))
+		{
+			ASSERT_EQ(runCommand(line).exitCode, 0) << line;
+		}
+	const auto summary = runCommand(kBatch + "'" + batch + "' --summary");
+	ASSERT_EQ(summary.exitCode, 0) << summary.output;
+	EXPECT_EQ(countLines(readFile(dir.file("out/summary.md")), "| 2 / 2 |"), 2u);
+	const auto unknown = runCommand(kBatch + "'" + batch + "' --task run/demo/v09/seed1");
+	EXPECT_EQ(unknown.exitCode, 1);
+	EXPECT_TRUE(contains(unknown.output, "no task 'run/demo/v09/seed1'")) << unknown.output;
+}
+
+TEST(VslamBatch, AFailedRunIsReportedAndTheOthersGoOn)
+{
+	TempDir dir;
+	const auto r = runCommand(kBatch + "'" + writeBatch(dir, true) + "'");
+	EXPECT_EQ(r.exitCode, 3) << r.output;
+	EXPECT_EQ(countLines(r.output, "run/bad/"), 4u) << r.output;
+	EXPECT_EQ(countLines(r.output, "FAILED: exit 3, see "), 4u) << r.output;
+	EXPECT_TRUE(contains(r.output, "4 run, 0 done before, 4 failed")) << r.output;
+	EXPECT_TRUE(contains(readFile(dir.file("out/summary.md")), "| bad | v01: vslam_particle_filter.sampleSize=30 | 0 / 2 |"));
+	const auto config = runCommand(kBatch + "'" + dir.file("nothing.ini") + "'");
+	EXPECT_EQ(config.exitCode, 2);
+	EXPECT_TRUE(contains(config.output, "no batch file")) << config.output;
+}
