@@ -5,6 +5,7 @@
  *                 [--max-step-gap S] [--std-range M] [--std-bearing-deg D]
  *
  * Writes OUTPUT.rawlog, OUTPUT_groundtruth.tum and OUTPUT_landmarks.txt. */
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/MrclamImporter.h>
@@ -23,15 +24,6 @@ const char* kUsage =
 	"                       (default 0.15, measured on MRCLAM Dataset 6)\n"
 	"  --sigma-*            odometry noise model written into each action's\n"
 	"                       covariance (defaults 0.08, 0.1, 0.1: see doc/results.md)\n";
-
-double number(const std::string& flag, const char* text)
-{
-	char* end = nullptr;
-	const double v = std::strtod(text, &end);
-	if (*end != '\0' || !std::isfinite(v))
-		throw std::invalid_argument(flag + ": '" + text + "' is not a number");
-	return v;
-}
 }  // namespace
 
 int main(int argc, const char** argv)
@@ -53,19 +45,19 @@ int main(int argc, const char** argv)
 				return 0;
 			}
 			if (a == "--odometry-delay")
-				o.odometry_delay = number(a, next());
+				o.odometry_delay = numberArgument(a, next());
 			else if (a == "--max-step-gap")
-				o.max_step_gap = number(a, next());
+				o.max_step_gap = numberArgument(a, next());
 			else if (a == "--sigma-T")
-				o.motion.sigma_T = number(a, next());
+				o.motion.sigma_T = numberArgument(a, next());
 			else if (a == "--sigma-R")
-				o.motion.sigma_R = number(a, next());
+				o.motion.sigma_R = numberArgument(a, next());
 			else if (a == "--sigma-R-per-meter")
-				o.motion.sigma_R_per_meter = number(a, next());
+				o.motion.sigma_R_per_meter = numberArgument(a, next());
 			else if (a == "--std-range")
-				o.std_range = number(a, next());
+				o.std_range = numberArgument(a, next());
 			else if (a == "--std-bearing-deg")
-				o.std_bearing = number(a, next()) * M_PI / 180;
+				o.std_bearing = numberArgument(a, next()) * M_PI / 180;
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "'");
 			else
@@ -73,7 +65,7 @@ int main(int argc, const char** argv)
 		}
 		if (positional.size() != 3)
 			throw std::invalid_argument("expected DATASET_DIR ROBOT OUTPUT.rawlog");
-		o.robot = static_cast<int>(number("ROBOT", positional[1].c_str()));
+		o.robot = static_cast<int>(numberArgument("ROBOT", positional[1]));
 		const MrclamImport im = importMrclam(positional[0], o);
 		const std::string& rawlog = positional[2];
 		writeActionFrameRawlog(rawlog, im.steps);

@@ -2,6 +2,7 @@
  * et al. 2012 conventions, planar): ATE raw and after SE(2) alignment, RPE
  * over time or distance windows, the error over time as CSV, and the
  * paper's figures for a run. See kUsage. */
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
 #include <libvslam/eval/RelativePoseError.h>
@@ -44,10 +45,8 @@ const char* kUsage =
 
 double positiveNumber(const std::string& option, const char* text)
 {
-	char* end = nullptr;
-	const double v = std::strtod(text, &end);
-	if (*end != '\0' || !(v > 0) || !std::isfinite(v))
-		throw std::invalid_argument(option + " needs a positive number, not '" + text + "'");
+	const double v = vslam::numberArgument(option, text);
+	if (!(v > 0)) throw std::invalid_argument(option + " needs a positive number, not '" + text + "'");
 	return v;
 }
 

@@ -1,9 +1,20 @@
 #include <libvslam/app/ToolArguments.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace vslam
 {
+double numberArgument(const std::string& option, const std::string& text)
+{
+	char* end = nullptr;
+	const double v = std::strtod(text.c_str(), &end);
+	if (text.empty() || *end != '\0' || !std::isfinite(v))
+		throw std::invalid_argument(option + ": '" + text + "' is not a number");
+	return v;
+}
+
 ToolArguments parseToolArguments(int argc, const char** argv, const std::set<std::string>& valueOptions,
 	const std::set<std::string>& flags)
 {

@@ -28,6 +28,10 @@ struct ToolArguments
 	}
 };
 
+/** The finite number \a text given for \a option; throws
+ * std::invalid_argument ("OPTION: 'TEXT' is not a number") otherwise. */
+double numberArgument(const std::string& option, const std::string& text);
+
 /** valueOptions: e.g. {"--config"}; flags: e.g. {"--quiet", "--help"}
  * ("-h" counts as "--help"). */
 ToolArguments parseToolArguments(int argc, const char** argv, const std::set<std::string>& valueOptions,

@@ -6,9 +6,12 @@
  *  - Run: vslam on the scenario's rawlog with vslam.RANDOM_SEED = seed and
  *    the variation's overrides, then its metrics against the ground truth
  *    (metrics.txt: ATE raw and aligned, RPE over 1 s, odometry alone, kidnaps
- *    and their recovery, wall time, peak memory).
+ *    and their recovery, to 0.3 m and to the run's error level before the
+ *    kidnap, wall time, peak memory).
  * A finished task leaves a `done` file holding its command line; a task
- * whose `done` matches is skipped (resume), anything else is run afresh. */
+ * whose `done` matches is skipped (resume), anything else is run afresh. A
+ * finished run whose metrics come from an older version of the scoring is
+ * scored again from its outputs, not run again. */
 #include <libvslam/batch/BatchPlan.h>
 
 #include <map>

@@ -17,6 +17,8 @@
 
 using namespace vslam;
 using vslam::testing::readFile;
+using vslam::testing::lineCount;
+using vslam::testing::quoted;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 
@@ -25,22 +27,12 @@ namespace
 const std::string kSource = VSLAM_SOURCE_DIR;
 const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
-
-size_t lineCount(const std::string& file)
-{
-	std::ifstream f(file);
-	size_t n = 0;
-	for (std::string line; std::getline(f, line);) n++;
-	return n;
-}
-
 /** A simulated range-bearing rawlog long enough to be interrupted (30,000 steps). */
 std::string longRawlog(const TempDir& dir)
 {
 	const std::string file = dir.file("long.rawlog");
-	const auto r = runCommand(q(kBin + "vslam-simul-measurements") + " " +
-		q(kSource + "/config_ini/simul_range_bearing.ini") + " " + q(file) +
+	const auto r = runCommand(quoted(kBin + "vslam-simul-measurements") + " " +
+		quoted(kSource + "/config_ini/simul_range_bearing.ini") + " " + quoted(file) +
 		" --set vslam_sim.duration=3000");
 	EXPECT_EQ(r.exitCode, 0) << r.output;
 	return file;

@@ -12,6 +12,8 @@
 #include <regex>
 
 using vslam::testing::readFile;
+using vslam::testing::lineCount;
+using vslam::testing::quoted;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 namespace fs = std::filesystem;
@@ -19,8 +21,6 @@ namespace fs = std::filesystem;
 namespace
 {
 const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
-std::string q(const std::string& s) { return "'" + s + "'"; }
-
 /** An INI for vslam on `rawlog` (100 particles, seed 1). */
 std::string writeIni(const TempDir& dir, const std::string& rawlog, bool startFromGroundTruth)
 {
@@ -51,7 +51,7 @@ TEST(VisualPipeline, ImagesInOneRunBeatDeadReckoning)
 	o.odometryTurnScale = 1.05;
 	o.laps = 2;
 	const int images = vslam::testing::writeRoomImageRawlog(rawlog, o);
-	const auto r = runCommand(q(kBin + "vslam") + " " + q(writeIni(dir, rawlog, true)) + " --quiet --out " + q(dir.file("out")));
+	const auto r = runCommand(quoted(kBin + "vslam") + " " + quoted(writeIni(dir, rawlog, true)) + " --quiet --out " + quoted(dir.file("out")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const std::string summary = readFile(dir.file("out/run_summary.yaml"));
 	EXPECT_EQ(summaryValue(summary, "front_end:\n  images:"), images) << summary;
@@ -75,14 +75,14 @@ TEST(VisualPipeline, FrontEndAloneThenFilterEqualsOneRunAndRunsRepeatExactly)
 	TempDir dir;
 	const std::string rawlog = dir.file("room.rawlog");
 	vslam::testing::writeRoomImageRawlog(rawlog);
-	const auto fe = runCommand(q(kBin + "vslam-frontend") + " " + q(rawlog) + " " + q(dir.file("meas.rawlog")));
+	const auto fe = runCommand(quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("meas.rawlog")));
 	ASSERT_EQ(fe.exitCode, 0) << fe.output;
 	EXPECT_NE(fe.output.find("landmarks created"), std::string::npos) << fe.output;
 	const std::string ini = writeIni(dir, rawlog, false);
-	const auto one = runCommand(q(kBin + "vslam") + " " + q(ini) + " --quiet --out " + q(dir.file("one")));
-	const auto again = runCommand(q(kBin + "vslam") + " " + q(ini) + " --quiet --out " + q(dir.file("again")));
-	const auto split = runCommand(q(kBin + "vslam") + " " + q(ini) + " " + q(dir.file("meas.rawlog")) +
-		" --quiet --out " + q(dir.file("split")));
+	const auto one = runCommand(quoted(kBin + "vslam") + " " + quoted(ini) + " --quiet --out " + quoted(dir.file("one")));
+	const auto again = runCommand(quoted(kBin + "vslam") + " " + quoted(ini) + " --quiet --out " + quoted(dir.file("again")));
+	const auto split = runCommand(quoted(kBin + "vslam") + " " + quoted(ini) + " " + quoted(dir.file("meas.rawlog")) +
+		" --quiet --out " + quoted(dir.file("split")));
 	ASSERT_EQ(one.exitCode, 0) << one.output;
 	ASSERT_EQ(again.exitCode, 0) << again.output;
 	ASSERT_EQ(split.exitCode, 0) << split.output;
@@ -110,14 +110,14 @@ TEST(VisualPipeline, MissingImageFileNamesTheImageAndTheEntry)
 	o.externalImages = true;
 	vslam::testing::writeRoomImageRawlog(rawlog, o);
 	fs::remove(dir.file("ext_Images/img_5.png"));
-	const auto r = runCommand(q(kBin + "vslam") + " " + q(writeIni(dir, rawlog, false)) + " --quiet --out " + q(dir.file("out")));
+	const auto r = runCommand(quoted(kBin + "vslam") + " " + quoted(writeIni(dir, rawlog, false)) + " --quiet --out " + quoted(dir.file("out")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
 	EXPECT_NE(r.output.find("img_5.png"), std::string::npos) << r.output;
 	EXPECT_NE(r.output.find("entry 10"), std::string::npos) << r.output;  // the step's first object
 	EXPECT_NE(r.output.find("not found"), std::string::npos) << r.output;
 	// The steps before the missing image are in the outputs.
 	EXPECT_GE(std::count(std::istreambuf_iterator<char>(std::ifstream(dir.file("out/log_estimated_path.txt")).rdbuf()), {}, '\n'), 5);
-	const auto fe = runCommand(q(kBin + "vslam-frontend") + " " + q(rawlog) + " " + q(dir.file("m.rawlog")));
+	const auto fe = runCommand(quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")));
 	EXPECT_EQ(fe.exitCode, 3) << fe.output;
 	EXPECT_NE(fe.output.find("img_5.png"), std::string::npos) << fe.output;
 }

@@ -19,6 +19,8 @@
 using namespace vslam;
 using vslam::testing::readFile;
 using vslam::testing::contains;
+using vslam::testing::lineCount;
+using vslam::testing::quoted;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 namespace fs = std::filesystem;
@@ -33,18 +35,10 @@ const std::string kDemoIni = kSource + "/config_ini/demo_visual.ini";
 const std::string kDemoRawlog = kSource + "/rawlogs/demo_visual.rawlog";
 const std::string kDemoTruth = kSource + "/rawlogs/demo_visual_groundtruth.tum";
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
-
 /** vslam with the demo INI and the given arguments. */
 vslam::testing::CommandResult runDemo(const std::string& args)
 {
-	return runCommand(q(kVslam) + " " + q(kDemoIni) + " --quiet " + args);
-}
-
-size_t lineCount(const std::string& file)
-{
-	const std::string s = readFile(file);
-	return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+	return runCommand(quoted(kVslam) + " " + quoted(kDemoIni) + " --quiet " + args);
 }
 
 
@@ -74,7 +68,7 @@ double summaryRmse(const std::string& summaryFile, const std::string& name)
 TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
 {
 	TempDir dir;
-	const auto r = runDemo("--out " + q(dir.file("out")));
+	const auto r = runDemo("--out " + quoted(dir.file("out")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	for (const char* f : {"log_estimated_path.txt", "estimated_path.tum", "log_odometry_path.txt",
 			 "log_filter_steps.txt", "final_map.txt", "most_likely_path.txt",
@@ -103,9 +97,9 @@ TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
 TEST(VslamApp, SameSeedSameOutputsByteForByte)
 {
 	TempDir dir;
-	ASSERT_EQ(runDemo("--out " + q(dir.file("a"))).exitCode, 0);
-	ASSERT_EQ(runDemo("--out " + q(dir.file("b"))).exitCode, 0);
-	ASSERT_EQ(runDemo("--out " + q(dir.file("c")) + " --set vslam.RANDOM_SEED=2").exitCode, 0);
+	ASSERT_EQ(runDemo("--out " + quoted(dir.file("a"))).exitCode, 0);
+	ASSERT_EQ(runDemo("--out " + quoted(dir.file("b"))).exitCode, 0);
+	ASSERT_EQ(runDemo("--out " + quoted(dir.file("c")) + " --set vslam.RANDOM_SEED=2").exitCode, 0);
 	for (const char* f : {"log_estimated_path.txt", "estimated_path.tum", "final_map.txt",
 			 "most_likely_path.txt", "log_odometry_path.txt"})
 		EXPECT_EQ(readFile(dir.file("a/") + f), readFile(dir.file("b/") + f)) << f;
@@ -116,7 +110,7 @@ TEST(VslamApp, SameSeedSameOutputsByteForByte)
 TEST(VslamApp, SetOverridesAnyKeyAndRawlogArgumentOverridesTheIni)
 {
 	TempDir dir;
-	const auto r = runDemo(q(kDemoRawlog) + " --out " + q(dir.file("o")) +
+	const auto r = runDemo(quoted(kDemoRawlog) + " --out " + quoted(dir.file("o")) +
 		" --set vslam_particle_filter.sampleSize=50 --set vslam.max_steps=100");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_TRUE(contains(readFile(dir.file("o/run_summary.yaml")), "particles: 50"));
@@ -147,7 +141,7 @@ TEST(VslamApp, ObservationFormatRawlogsWork)
 			for (const auto& obs : *s.sf) arch << *obs;
 		}
 	}
-	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	const auto r = runDemo(quoted(file) + " --out " + quoted(dir.file("o")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
 	EXPECT_TRUE(contains(summary, "action_sensoryframe_steps: 0")) << summary;
@@ -162,7 +156,7 @@ TEST(VslamApp, RunsMrptsKfSlamDemo)
 	if (!fs::exists("/usr/share/mrpt/datasets/kf-slam_demo.rawlog"))
 		GTEST_SKIP() << "MRPT's kf-slam demo rawlog is absent (package mrpt-common)";
 	TempDir dir;
-	const auto r = runCommand(q(kVslam) + " " + q(ini) + " --quiet --out " + q(dir.file("o")));
+	const auto r = runCommand(quoted(kVslam) + " " + quoted(ini) + " --quiet --out " + quoted(dir.file("o")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	// Matched by step with MRPT's ground-truth pose list. Measured: 6 mm
 	// (dead reckoning 0.68 m).
@@ -179,15 +173,15 @@ TEST(VslamApp, LocalizesInAPriorMapFromAWrongStart)
 	// landmark may appear.
 	TempDir dir;
 	const std::string sim = std::string(VSLAM_BINARY_DIR) + "/bin/vslam-simul-measurements";
-	ASSERT_EQ(runCommand(q(sim) + " " + q(kSource + "/config_ini/simul_range_bearing.ini") + " " +
-				  q(dir.file("rb.rawlog")) + " --set vslam_sim.duration=120")
+	ASSERT_EQ(runCommand(quoted(sim) + " " + quoted(kSource + "/config_ini/simul_range_bearing.ini") + " " +
+				  quoted(dir.file("rb.rawlog")) + " --set vslam_sim.duration=120")
 				  .exitCode,
 		0);
-	const auto r = runCommand(q(kVslam) + " " +
-		q(kSource + "/config_ini/kfslam_demo_range_bearing.ini") + " " + q(dir.file("rb.rawlog")) +
-		" --quiet --out " + q(dir.file("o")) + " --set vslam.ground_truth_file=" +
-		q(dir.file("rb_groundtruth.tum")) + " --set vslam.prior_map_file=" +
-		q(dir.file("rb_landmarks.txt")));
+	const auto r = runCommand(quoted(kVslam) + " " +
+		quoted(kSource + "/config_ini/kfslam_demo_range_bearing.ini") + " " + quoted(dir.file("rb.rawlog")) +
+		" --quiet --out " + quoted(dir.file("o")) + " --set vslam.ground_truth_file=" +
+		quoted(dir.file("rb_groundtruth.tum")) + " --set vslam.prior_map_file=" +
+		quoted(dir.file("rb_landmarks.txt")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
 	EXPECT_TRUE(contains(summary, "landmarks: {total: 20, pose: 0, point: 20}")) << summary;
@@ -199,8 +193,8 @@ TEST(VslamApp, LocalizesInAPriorMapFromAWrongStart)
 	const Trajectory late(est.begin() + 300, est.end());  // after 30 s
 	EXPECT_LT(computeAte(late, truth).median, 0.2);
 
-	const auto bad = runDemo("--out " + q(dir.file("x")) + " --set vslam.prior_map_file=" +
-		q(dir.file("nomap.txt")));
+	const auto bad = runDemo("--out " + quoted(dir.file("x")) + " --set vslam.prior_map_file=" +
+		quoted(dir.file("nomap.txt")));
 	EXPECT_EQ(bad.exitCode, 3) << bad.output;
 	EXPECT_TRUE(contains(bad.output, "nomap.txt")) << bad.output;
 	EXPECT_FALSE(fs::exists(dir.file("x")));
@@ -214,7 +208,7 @@ TEST(VslamApp, MissingRawlogIsNamedAndOutputsAreLeftAlone)
 	TempDir dir;
 	fs::create_directories(dir.file("o"));
 	std::ofstream(dir.file("o/log_estimated_path.txt")) << "earlier run\n";
-	const auto r = runDemo(q(dir.file("nope.rawlog")) + " --out " + q(dir.file("o")));
+	const auto r = runDemo(quoted(dir.file("nope.rawlog")) + " --out " + quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 3);
 	EXPECT_TRUE(contains(r.output, dir.file("nope.rawlog"))) << r.output;
 	EXPECT_EQ(readFile(dir.file("o/log_estimated_path.txt")), "earlier run\n");
@@ -224,7 +218,7 @@ TEST(VslamApp, TruncatedRawlogFailsNamingFileAndEntryAndKeepsOutputsSoFar)
 {
 	TempDir dir;
 	const std::string file = truncatedDemo(dir, 0.5);
-	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	const auto r = runDemo(quoted(file) + " --out " + quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
 	EXPECT_TRUE(contains(r.output, file)) << r.output;
 	EXPECT_TRUE(contains(r.output, "entry")) << r.output;
@@ -244,12 +238,12 @@ TEST(VslamApp, CorruptRawlogFailsNamingTheFile)
 	for (size_t i = bytes.size() / 3; i < bytes.size() / 3 + 64; i++) bytes[i] ^= 0x5a;
 	const std::string file = dir.file("corrupt.rawlog");
 	std::ofstream(file, std::ios::binary) << bytes;
-	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	const auto r = runDemo(quoted(file) + " --out " + quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
 	EXPECT_TRUE(contains(r.output, file)) << r.output;
 
 	std::ofstream(dir.file("text.rawlog")) << "this is not a rawlog\n";
-	const auto t = runDemo(q(dir.file("text.rawlog")) + " --out " + q(dir.file("t")));
+	const auto t = runDemo(quoted(dir.file("text.rawlog")) + " --out " + quoted(dir.file("t")));
 	EXPECT_EQ(t.exitCode, 3) << t.output;
 	EXPECT_TRUE(contains(t.output, dir.file("text.rawlog"))) << t.output;
 }
@@ -261,7 +255,7 @@ TEST(VslamApp, RawlogThatCrashesMrptsDeserializerIsAnInputErrorNamingTheEntry)
 	TempDir dir;
 	const std::string file =
 		std::string(VSLAM_SOURCE_DIR) + "/libvslam/io/testdata/segv_in_mrpt_deserializer_1.rawlog";
-	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	const auto r = runDemo(quoted(file) + " --out " + quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
 	EXPECT_TRUE(contains(r.output, file + "', entry 6: corrupt data")) << r.output;
 	EXPECT_TRUE(contains(readFile(dir.file("o/run_summary.yaml")), "status: failed"));
@@ -288,7 +282,7 @@ TEST(VslamApp, NanOdometryNamesTheEntry)
 			arch << *s.action << *s.sf;
 		}
 	}
-	const auto r = runDemo(q(file) + " --out " + q(dir.file("o")));
+	const auto r = runDemo(quoted(file) + " --out " + quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
 	EXPECT_TRUE(contains(r.output, "entry 300")) << r.output;  // 2 objects per step
 	EXPECT_TRUE(contains(r.output, "not finite")) << r.output;
@@ -328,7 +322,7 @@ TEST(VslamApp, BadMeasurementFoundByTheFilterIsAnInputErrorNamingTheEntry)
 		}
 	}
 	std::ofstream(dir.file("rb.ini")) << "[vslam]\nrawlog_file = " << dir.file("rb.rawlog") << "\n";
-	const auto r = runCommand(q(kVslam) + " " + q(dir.file("rb.ini")) + " --quiet --out " + q(dir.file("o")));
+	const auto r = runCommand(quoted(kVslam) + " " + quoted(dir.file("rb.ini")) + " --quiet --out " + quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
 	EXPECT_TRUE(contains(r.output, "entry 8")) << r.output;
 	EXPECT_TRUE(contains(r.output, "beyond any sensor")) << r.output;
@@ -340,7 +334,7 @@ TEST(VslamApp, BadMeasurementFoundByTheFilterIsAnInputErrorNamingTheEntry)
 TEST(VslamApp, UnparsableValueNamesSectionAndKey)
 {
 	TempDir dir;
-	const auto r = runDemo("--out " + q(dir.file("o")) + " --set vslam_particle_filter.sampleSize=lots");
+	const auto r = runDemo("--out " + quoted(dir.file("o")) + " --set vslam_particle_filter.sampleSize=lots");
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 	EXPECT_TRUE(contains(r.output, "sampleSize")) << r.output;
 	EXPECT_TRUE(contains(r.output, "vslam_particle_filter")) << r.output;
@@ -351,11 +345,11 @@ TEST(VslamApp, UnparsableValueNamesSectionAndKey)
 TEST(VslamApp, OutOfRangeValueSaysTheAllowedRange)
 {
 	TempDir dir;
-	const auto r = runDemo("--out " + q(dir.file("o")) + " --set vslam_particle_filter.BETA=1.5");
+	const auto r = runDemo("--out " + quoted(dir.file("o")) + " --set vslam_particle_filter.BETA=1.5");
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 	EXPECT_TRUE(contains(r.output, "BETA")) << r.output;
 	EXPECT_TRUE(contains(r.output, "1.5")) << r.output;
-	const auto n = runDemo("--out " + q(dir.file("o")) + " --set vslam_motion_model.sigma_T=-0.1");
+	const auto n = runDemo("--out " + quoted(dir.file("o")) + " --set vslam_motion_model.sigma_T=-0.1");
 	EXPECT_EQ(n.exitCode, 2) << n.output;
 	EXPECT_TRUE(contains(n.output, "sigma_T")) << n.output;
 }
@@ -365,8 +359,8 @@ TEST(VslamApp, MisspelledKeyIsAnErrorWithTheClosestKnownKey)
 	TempDir dir;
 	std::ofstream(dir.file("typo.ini")) << "[vslam]\nrawlog_file = " << kDemoRawlog
 										<< "\n[vslam_motion_model]\nsigma_TT = 0.3\n";
-	const auto r = runCommand(q(kVslam) + " " + q(dir.file("typo.ini")) + " --quiet --out " +
-		q(dir.file("o")));
+	const auto r = runCommand(quoted(kVslam) + " " + quoted(dir.file("typo.ini")) + " --quiet --out " +
+		quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 	EXPECT_TRUE(contains(r.output, "sigma_TT")) << r.output;
 	EXPECT_TRUE(contains(r.output, "did you mean 'sigma_T'")) << r.output;
@@ -374,8 +368,8 @@ TEST(VslamApp, MisspelledKeyIsAnErrorWithTheClosestKnownKey)
 	// Sections of other programs in the same INI are not vslam's business.
 	std::ofstream(dir.file("other.ini")) << "[vslam]\nrawlog_file = " << kDemoRawlog
 										 << "\nmax_steps = 10\n[MappingApplication]\nanything = 1\n";
-	EXPECT_EQ(runCommand(q(kVslam) + " " + q(dir.file("other.ini")) + " --quiet --out " +
-				  q(dir.file("o2")))
+	EXPECT_EQ(runCommand(quoted(kVslam) + " " + quoted(dir.file("other.ini")) + " --quiet --out " +
+				  quoted(dir.file("o2")))
 				  .exitCode,
 		0);
 }
@@ -387,14 +381,14 @@ TEST(VslamApp, BrokenIniSyntaxIsAConfigurationErrorNamingTheFile)
 	TempDir dir;
 	std::ofstream(dir.file("broken.ini")) << "[vslam]\nrawlog_file = " << kDemoRawlog
 										  << "\nmax_steps = $eval{s =\n";
-	const auto r = runCommand(q(kVslam) + " " + q(dir.file("broken.ini")) + " --quiet --out " +
-		q(dir.file("o")));
+	const auto r = runCommand(quoted(kVslam) + " " + quoted(dir.file("broken.ini")) + " --quiet --out " +
+		quoted(dir.file("o")));
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 	EXPECT_TRUE(contains(r.output, "broken.ini")) << r.output;
 	EXPECT_TRUE(contains(r.output, "INI syntax: Line 3")) << r.output;
 	EXPECT_FALSE(fs::exists(dir.file("o")));
 	const std::string sim = std::string(VSLAM_BINARY_DIR) + "/bin/vslam-simul-measurements";
-	const auto s = runCommand(q(sim) + " " + q(dir.file("broken.ini")) + " " + q(dir.file("s.rawlog")));
+	const auto s = runCommand(quoted(sim) + " " + quoted(dir.file("broken.ini")) + " " + quoted(dir.file("s.rawlog")));
 	EXPECT_EQ(s.exitCode, 2) << s.output;
 	EXPECT_TRUE(contains(s.output, "broken.ini")) << s.output;
 	EXPECT_TRUE(contains(s.output, "INI syntax: Line 3")) << s.output;
@@ -403,10 +397,10 @@ TEST(VslamApp, BrokenIniSyntaxIsAConfigurationErrorNamingTheFile)
 
 TEST(VslamApp, UsageAndMissingConfigurationErrors)
 {
-	EXPECT_EQ(runCommand(q(kVslam)).exitCode, 1);
-	EXPECT_EQ(runCommand(q(kVslam) + " --help").exitCode, 0);
-	EXPECT_EQ(runCommand(q(kVslam) + " " + q(kDemoIni) + " --frobnicate").exitCode, 1);
-	const auto m = runCommand(q(kVslam) + " /nonexistent/x.ini");
+	EXPECT_EQ(runCommand(quoted(kVslam)).exitCode, 1);
+	EXPECT_EQ(runCommand(quoted(kVslam) + " --help").exitCode, 0);
+	EXPECT_EQ(runCommand(quoted(kVslam) + " " + quoted(kDemoIni) + " --frobnicate").exitCode, 1);
+	const auto m = runCommand(quoted(kVslam) + " /nonexistent/x.ini");
 	EXPECT_EQ(m.exitCode, 2);
 	EXPECT_TRUE(contains(m.output, "/nonexistent/x.ini")) << m.output;
 	const auto s = runDemo("--set nodot=1");
@@ -417,10 +411,10 @@ TEST(VslamApp, UsageAndMissingConfigurationErrors)
 TEST(VslamApp, PrintedDefaultConfigurationRunsAsIs)
 {
 	TempDir dir;
-	const auto p = runCommand(q(kVslam) + " --print-default-config");
+	const auto p = runCommand(quoted(kVslam) + " --print-default-config");
 	ASSERT_EQ(p.exitCode, 0);
 	std::ofstream(dir.file("default.ini")) << p.output;
-	const auto r = runCommand(q(kVslam) + " " + q(dir.file("default.ini")) + " " + q(kDemoRawlog) +
-		" --quiet --out " + q(dir.file("o")) + " --set vslam.max_steps=50");
+	const auto r = runCommand(quoted(kVslam) + " " + quoted(dir.file("default.ini")) + " " + quoted(kDemoRawlog) +
+		" --quiet --out " + quoted(dir.file("o")) + " --set vslam.max_steps=50");
 	EXPECT_EQ(r.exitCode, 0) << r.output;
 }

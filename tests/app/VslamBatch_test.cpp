@@ -73,6 +73,19 @@ TEST(VslamBatch, RunsTheGridSummarizesAndResumes)
 	ASSERT_EQ(again.exitCode, 0) << again.output;
 	EXPECT_TRUE(contains(again.output, "1 run, 3 done before, 0 failed")) << again.output;
 	EXPECT_EQ(readFile(dir.file("out/demo/v01/seed1/vslam/estimated_path.tum")), path);  // same seed, same run
+
+	// Metrics of an older scoring are scored again from the outputs, without
+	// running vslam again.
+	const std::string metricsFile = dir.file("out/demo/v02/seed1/metrics.txt");
+	std::string old = readFile(metricsFile);
+	const size_t at = old.find("scoring_version ");
+	old.replace(at, old.find('\n', at) - at, "scoring_version 1");
+	std::ofstream(metricsFile) << old;
+	const auto rescored = runCommand(kBatch + "'" + batch + "'");
+	ASSERT_EQ(rescored.exitCode, 0) << rescored.output;
+	EXPECT_TRUE(contains(rescored.output, "run/demo/v02/seed1: done before, scored again")) << rescored.output;
+	EXPECT_TRUE(contains(rescored.output, "0 run, 4 done before, 0 failed")) << rescored.output;
+	EXPECT_FALSE(contains(readFile(metricsFile), "scoring_version 1\n"));
 }
 
 TEST(VslamBatch, ListedTasksRunOneByOneAsOnACluster)

@@ -11,6 +11,8 @@
 #include <sstream>
 
 using vslam::testing::contains;
+using vslam::testing::lineCount;
+using vslam::testing::quoted;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
 
@@ -18,8 +20,6 @@ namespace
 {
 const std::string kSource = VSLAM_SOURCE_DIR;
 const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
-
-std::string q(const std::string& s) { return "'" + s + "'"; }
 
 /** The number after `key ` on the line starting with `line:`. */
 double valueOf(const std::string& output, const std::string& line, const std::string& key)
@@ -30,14 +30,6 @@ double valueOf(const std::string& output, const std::string& line, const std::st
 			if (const auto at = l.find(" " + key + " "); at != std::string::npos)
 				return std::stod(l.substr(at + key.size() + 2));
 	return NAN;
-}
-
-size_t lineCount(const std::string& file)
-{
-	std::ifstream in(file);
-	size_t n = 0;
-	for (std::string l; std::getline(in, l);) n++;
-	return n;
 }
 }  // namespace
 
@@ -53,8 +45,8 @@ TEST(VslamEval, AShiftedEstimateHasExactlyItsShiftAsAbsoluteErrorAndNoRelativeEr
 	}
 	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
 	vslam::writeTumTrajectory(dir.file("shifted.tum"), shifted);
-	const auto r = runCommand(kBin + "vslam-eval " + q(dir.file("shifted.tum")) + " " + q(dir.file("truth.tum")) +
-		" --rpe-time 2 --rpe-distance 0.5 --csv " + q(dir.file("errors.csv")));
+	const auto r = runCommand(kBin + "vslam-eval " + quoted(dir.file("shifted.tum")) + " " + quoted(dir.file("truth.tum")) +
+		" --rpe-time 2 --rpe-distance 0.5 --csv " + quoted(dir.file("errors.csv")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NEAR(valueOf(r.output, "ate", "rmse"), 0.5, 1e-4) << r.output;
 	EXPECT_NEAR(valueOf(r.output, "ate", "max"), 0.5, 1e-4) << r.output;
@@ -69,11 +61,11 @@ TEST(VslamEval, AVslamRunGetsEveryFigureAndTheOdometryBesideIt)
 {
 	TempDir dir;
 	const std::string out = dir.file("run");
-	const auto run = runCommand(kBin + "vslam " + q(kSource + "/config_ini/demo_visual.ini") + " --quiet --out " +
-		q(out) + " --set vslam.max_steps=400");
+	const auto run = runCommand(kBin + "vslam " + quoted(kSource + "/config_ini/demo_visual.ini") + " --quiet --out " +
+		quoted(out) + " --set vslam.max_steps=400");
 	ASSERT_EQ(run.exitCode, 0) << run.output;
 	const std::string truth = kSource + "/rawlogs/demo_visual_groundtruth.tum";
-	const auto r = runCommand(kBin + "vslam-eval --run " + q(out) + " " + q(truth) + " --csv " + q(dir.file("e.csv")));
+	const auto r = runCommand(kBin + "vslam-eval --run " + quoted(out) + " " + quoted(truth) + " --csv " + quoted(dir.file("e.csv")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	for (const char* line : {"ate", "ate_se2_aligned", "odometry_ate", "odometry_ate_se2_aligned"})
 		EXPECT_EQ(valueOf(r.output, line, "poses"), 400) << line << "\n" << r.output;
@@ -98,15 +90,15 @@ TEST(VslamEval, BadArgumentsAreOneClearError)
 {
 	TempDir dir;
 	vslam::writeTumTrajectory(dir.file("t.tum"), {{1, {0, 0, 0}}, {2, {1, 0, 0}}});
-	const auto zero = runCommand(kBin + "vslam-eval " + q(dir.file("t.tum")) + " " + q(dir.file("t.tum")) +
+	const auto zero = runCommand(kBin + "vslam-eval " + quoted(dir.file("t.tum")) + " " + quoted(dir.file("t.tum")) +
 		" --rpe-time 0");
 	EXPECT_EQ(zero.exitCode, 1);
 	EXPECT_TRUE(contains(zero.output, "--rpe-time needs a positive number")) << zero.output;
-	const auto typo = runCommand(kBin + "vslam-eval " + q(dir.file("t.tum")) + " " + q(dir.file("t.tum")) +
+	const auto typo = runCommand(kBin + "vslam-eval " + quoted(dir.file("t.tum")) + " " + quoted(dir.file("t.tum")) +
 		" --rpe-tme 1");
 	EXPECT_EQ(typo.exitCode, 1);
 	EXPECT_TRUE(contains(typo.output, "unknown option '--rpe-tme'")) << typo.output;
-	const auto noRun = runCommand(kBin + "vslam-eval --run " + q(dir.file("nothing")) + " " + q(dir.file("t.tum")));
+	const auto noRun = runCommand(kBin + "vslam-eval --run " + quoted(dir.file("nothing")) + " " + quoted(dir.file("t.tum")));
 	EXPECT_EQ(noRun.exitCode, 3);
 	EXPECT_TRUE(contains(noRun.output, "nothing/estimated_path.tum")) << noRun.output;
 }

@@ -35,6 +35,18 @@ inline bool contains(const std::string& text, const std::string& part)
 	return text.find(part) != std::string::npos;
 }
 
+/** \a s in single quotes, for a shell command line. */
+inline std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+/** Lines of a file, an unterminated last one included. */
+inline size_t lineCount(const std::string& file)
+{
+	std::ifstream f(file);
+	size_t n = 0;
+	for (std::string line; std::getline(f, line);) n++;
+	return n;
+}
+
 inline std::string readFile(const std::string& file)
 {
 	std::ifstream in(file, std::ios::binary);
