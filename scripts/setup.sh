@@ -83,13 +83,15 @@ case "$MODE" in
     "$BUILD/bin/vslam-simul" config_ini/simul_demo.ini rawlogs/demo_rendered.rawlog --quiet
     echo "[setup] running: build/bin/vslam config_ini/demo_rendered.ini"
     "$BUILD/bin/vslam" config_ini/demo_rendered.ini
-    "$BUILD/bin/vslam-eval" vslam_out_demo/estimated_path.tum rawlogs/demo_rendered_groundtruth.tum \
-      --odometry rawlogs/demo_rendered_odometry.tum --world config_ini/worlds/living_room.world \
-      --plot vslam_out_demo/paths.png > /dev/null
+    echo "[setup] errors and figures: build/bin/vslam-eval --run vslam_out_demo rawlogs/demo_rendered_groundtruth.tum"
+    "$BUILD/bin/vslam-eval" --run vslam_out_demo rawlogs/demo_rendered_groundtruth.tum \
+      --world config_ini/worlds/living_room.world --plot vslam_out_demo/paths.png | grep -v '^figure:'
     cp rawlogs/demo_rendered_preview.png vslam_out_demo/simulation_preview.png
     echo "[setup] outputs in $ROOT/vslam_out_demo/: run_summary.yaml (errors against the ground truth),"
     echo "[setup]   estimated_path.tum, log_estimated_path.txt, final_map.txt, paths.png (estimate, truth,"
-    echo "[setup]   odometry over the floor plan), simulation_preview.png; the rendered rawlog and its"
+    echo "[setup]   odometry over the floor plan), figures/ (the paper's figures: paths with landmarks, error"
+    echo "[setup]   over time, measurements per landmark, particle spread, dual ratio),"
+    echo "[setup]   simulation_preview.png; the rendered rawlog and its"
     echo "[setup]   images are in rawlogs/demo_rendered.rawlog and rawlogs/demo_rendered_Images/"
     ;;
   test)
