@@ -5,6 +5,7 @@
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
+#include <libvslam/eval/MapError.h>
 #include <libvslam/eval/RelativePoseError.h>
 #include <libvslam/eval/RunFigures.h>
 #include <libvslam/eval/TrajectoryPlot.h>
@@ -41,7 +42,11 @@ const char* kUsage =
 	"  --plot FILE.png     the paths only (estimate, truth, odometry) over the floor plan\n"
 	"  --figures DIR       the paper's figures: paths, error over time, and with --run\n"
 	"                      measurements per landmark, particle spread, dual ratio\n"
-	"  --world WORLD_FILE  a vslam-simul world file: its floor plan under the paths\n";
+	"  --world WORLD_FILE  a vslam-simul world file: its floor plan under the paths\n"
+	"  --landmarks FILE    true landmarks (a simulator's or mrclam2rawlog's _landmarks.txt):\n"
+	"                      the map's error, landmarks matched by ID, raw and in the\n"
+	"                      trajectory's SE(2) alignment\n"
+	"  --map FILE          the estimated map (default with --run: DIR/final_map.txt)\n";
 
 double positiveNumber(const std::string& option, const char* text)
 {
@@ -89,6 +94,13 @@ vslam::AteStats report(const std::string& prefix, const vslam::Trajectory& estim
 	return asked;
 }
 
+void printMapError(const std::string& name, const vslam::MapErrorStats& m)
+{
+	std::printf("%s: landmarks %zu true %zu matched %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f\n",
+		name.c_str(), m.estimated, m.truth, m.matched, m.position.rmse, m.position.mean, m.position.median,
+		m.position.max, m.headingRmse * 180 / M_PI);
+}
+
 void writeErrorCsv(const std::string& file, const std::vector<std::pair<std::string, vslam::AteStats>>& series)
 {
 	FILE* f = std::fopen(file.c_str(), "wt");
@@ -110,7 +122,7 @@ int main(int argc, const char** argv)
 		AteOptions o;
 		std::vector<RpeOptions> windows;
 		std::vector<std::string> files;
-		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile;
+		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
@@ -143,6 +155,10 @@ int main(int argc, const char** argv)
 				odometryFile = argv[++i];
 			else if (a == "--world" && hasValue)
 				worldFile = argv[++i];
+			else if (a == "--landmarks" && hasValue)
+				trueMapFile = argv[++i];
+			else if (a == "--map" && hasValue)
+				mapFile = argv[++i];
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "' (or its value is missing)");
 			else
@@ -155,6 +171,7 @@ int main(int argc, const char** argv)
 			if (odometryFile.empty() && std::filesystem::exists(runDir + "/odometry_path.tum"))
 				odometryFile = runDir + "/odometry_path.tum";
 			if (figuresDir.empty()) figuresDir = runDir + "/figures";
+			if (mapFile.empty()) mapFile = runDir + "/final_map.txt";
 		}
 		if (files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
 		if (windows.empty()) windows.push_back(RpeOptions());  // 1 s, as the TUM tools
@@ -171,6 +188,15 @@ int main(int argc, const char** argv)
 			csv.push_back({"odometry", report("odometry_", *odometry, truth, raw, windows)});
 		}
 		if (!csvFile.empty()) writeErrorCsv(csvFile, csv);
+		if (!trueMapFile.empty())
+		{
+			if (mapFile.empty()) throw std::invalid_argument("--landmarks needs --map FILE (or --run)");
+			const LandmarkMap map = readLandmarkMap(mapFile, 0, 0), trueMap = readLandmarkMap(trueMapFile, 0, 0);
+			AteOptions align = o;
+			align.align = true;
+			printMapError("map", computeMapError(map, trueMap));
+			printMapError("map_se2_aligned", computeMapError(map, trueMap, computeAte(estimate, truth, align).alignment));
+		}
 
 		std::optional<world::FloorPlan> plan;
 		if (!worldFile.empty()) plan = world::loadFloorPlan(worldFile, "/usr/share");

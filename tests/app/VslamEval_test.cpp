@@ -65,10 +65,17 @@ TEST(VslamEval, AVslamRunGetsEveryFigureAndTheOdometryBesideIt)
 		quoted(out) + " --set vslam.max_steps=400");
 	ASSERT_EQ(run.exitCode, 0) << run.output;
 	const std::string truth = kSource + "/rawlogs/demo_visual_groundtruth.tum";
-	const auto r = runCommand(kBin + "vslam-eval --run " + quoted(out) + " " + quoted(truth) + " --csv " + quoted(dir.file("e.csv")));
+	const auto r = runCommand(kBin + "vslam-eval --run " + quoted(out) + " " + quoted(truth) + " --csv " +
+		quoted(dir.file("e.csv")) + " --landmarks " + quoted(kSource + "/rawlogs/demo_visual_landmarks.txt"));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	for (const char* line : {"ate", "ate_se2_aligned", "odometry_ate", "odometry_ate_se2_aligned"})
 		EXPECT_EQ(valueOf(r.output, line, "poses"), 400) << line << "\n" << r.output;
+	// The map against the simulator's landmarks: every mapped landmark has
+	// its true partner (same IDs).
+	const double mapped = valueOf(r.output, "map", "landmarks");
+	EXPECT_GT(mapped, 3) << r.output;
+	EXPECT_EQ(valueOf(r.output, "map", "matched"), mapped) << r.output;
+	EXPECT_EQ(valueOf(r.output, "map_se2_aligned", "matched"), mapped) << r.output;
 	for (const char* line : {"rpe_1s", "odometry_rpe_1s"})
 		EXPECT_GT(valueOf(r.output, line, "pairs"), 300) << line << "\n" << r.output;
 	// The estimate's ATE is the one the run itself reported.
