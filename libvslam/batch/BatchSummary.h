@@ -3,7 +3,7 @@
  * The batch's results over seeds, from the runs' metrics.txt files:
  *  - summary.md: per scenario and variation, mean +- standard deviation
  *    over the seeds of ATE RMSE (raw and aligned), ATE median and mean, RPE
- *    over 1 s, odometry's ATE RMSE and median, wall time, real-time factor and peak memory; kidnaps
+ *    over 1 s, odometry's ATE RMSE and median and RPE, wall time, real-time factor and peak memory; kidnaps
  *    recovered within 10 s; runs that failed or are missing;
  *  - summary.csv: one row per run with every metric;
  *  - summary_ate.png: the ATE RMSE per scenario and variation with its
