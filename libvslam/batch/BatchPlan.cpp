@@ -7,6 +7,8 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -174,11 +176,14 @@ std::vector<Variation> expandGrid(const BatchFile& f)
 			}
 		out = next;
 	}
-	for (size_t i = 0; i < out.size(); i++)
+	for (auto& v : out)
 	{
+		// FNV-1a of the settings: the same settings, the same folder.
+		uint64_t hash = 14695981039346656037ull;
+		for (const char c : v.label()) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
 		char name[24];
-		std::snprintf(name, sizeof name, "v%02zu", i + 1);
-		out[i].name = name;
+		std::snprintf(name, sizeof name, "v%08x", static_cast<unsigned>(hash >> 32));
+		v.name = v.set.empty() ? "defaults" : name;
 	}
 	return out;
 }

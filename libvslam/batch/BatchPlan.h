@@ -17,7 +17,8 @@
  *
  *   [grid]                               ; vslam keys, values separated by spaces:
  *   vslam_particle_filter.sampleSize = 100 200 400   ; every combination is a variation
- *                                        ; (keys in alphabetical order, the first varying slowest)
+ *                                        ; (keys in alphabetical order, the first varying slowest;
+ *                                        ; each in a folder named by a hash of its settings)
  *
  * The plan is the list of tasks: rendering each simulated scenario once per
  * seed, then one vslam run per scenario, variation and seed. */
@@ -39,7 +40,10 @@ struct Scenario
 
 struct Variation
 {
-	std::string name;  //!< "v01", ... in grid order
+	/** Its folder: "defaults", or "v" + 8 hex digits of a hash of its
+	 * settings, so that the folder stays when the grid grows or is reordered
+	 * (finished runs are then kept, not redone). */
+	std::string name;
 	std::vector<std::string> set;  //!< SECTION.KEY=VALUE
 	std::string label() const;  //!< "key=value, key=value" or "defaults"
 };
@@ -55,7 +59,7 @@ struct Task
 	size_t scenario = 0;  //!< index in BatchPlan::scenarios
 	size_t variation = 0;  //!< index in BatchPlan::variations (Run only)
 	int seed = 0;
-	std::string id;  //!< "render/living_room/seed3", "run/living_room/v02/seed3"
+	std::string id;  //!< "render/living_room/seed3", "run/living_room/v5c1e09a7/seed3"
 	std::string dir;  //!< its output folder
 };
 

@@ -49,12 +49,34 @@ TEST(BatchPlan, TheGridTimesTheSeedsGivesTheRunsInOrder)
 	EXPECT_EQ(plan.variations[0].label(), "vslam_mixture_proposal.dual_ratio=0, vslam_particle_filter.sampleSize=50");
 	EXPECT_EQ(plan.variations[1].label(), "vslam_mixture_proposal.dual_ratio=0, vslam_particle_filter.sampleSize=100");
 	EXPECT_EQ(plan.variations[5].label(), "vslam_mixture_proposal.dual_ratio=0.2, vslam_particle_filter.sampleSize=100");
-	EXPECT_EQ(plan.variations[5].name, "v06");
+	const std::string last = plan.variations[5].name;
 	ASSERT_EQ(plan.tasks.size(), 24u);  // fixed data: no rendering
-	EXPECT_EQ(plan.tasks[0].id, "run/demo/v01/seed1");
-	EXPECT_EQ(plan.tasks[23].id, "run/demo/v06/seed7");
-	EXPECT_EQ(plan.tasks[23].dir, dir.file("out/demo/v06/seed7"));  // relative to the batch file
+	EXPECT_EQ(plan.tasks[0].id, "run/demo/" + plan.variations[0].name + "/seed1");
+	EXPECT_EQ(plan.tasks[23].id, "run/demo/" + last + "/seed7");
+	EXPECT_EQ(plan.tasks[23].dir, dir.file("out/demo/" + last + "/seed7"));  // relative to the batch file
 	EXPECT_GE(plan.jobs, 1);  // 0: one per core
+}
+
+TEST(BatchPlan, AVariationKeepsItsFolderWhenTheGridGrows)
+{
+	TempDir dir;
+	const auto small = loadBatchPlan(writeBatch(dir, "seeds = 1", "[grid]\nvslam_particle_filter.sampleSize = 50 100\n"));
+	const auto grown = loadBatchPlan(writeBatch(dir, "seeds = 1",
+		"[grid]\nvslam_particle_filter.sampleSize = 100 50 200\nvslam_mixture_proposal.dual_ratio = 0.1\n"));
+	const auto none = loadBatchPlan(writeBatch(dir, "seeds = 1", ""));
+	ASSERT_EQ(small.variations.size(), 2u);
+	ASSERT_EQ(none.variations.size(), 1u);
+	EXPECT_EQ(none.variations[0].name, "defaults");
+	EXPECT_NE(small.variations[0].name, small.variations[1].name);
+	EXPECT_EQ(small.variations[0].name.size(), 9u);  // "v" + 8 hex digits
+	// The same settings keep their folder whatever the grid's order; other
+	// settings (here every variation of the grown grid has a new key) get
+	// other folders.
+	const auto again = loadBatchPlan(writeBatch(dir, "seeds = 1", "[grid]\nvslam_particle_filter.sampleSize = 100 50\n"));
+	EXPECT_EQ(again.variations[0].name, small.variations[1].name);
+	EXPECT_EQ(again.variations[1].name, small.variations[0].name);
+	for (const auto& v : grown.variations)
+		for (const auto& w : small.variations) EXPECT_NE(v.name, w.name) << v.label();
 }
 
 TEST(BatchPlan, SimulatedScenariosAreRenderedOncePerSeedBeforeAnyRun)

@@ -104,7 +104,7 @@ std::string writeBatchSummary(const BatchPlan& plan)
 			if (kidnaps > 0)
 				std::snprintf(kidnapCell, sizeof kidnapCell, "%.0f / %.0f (%.0f to prior level)",
 					total(runs, "kidnaps_recovered_10s"), kidnaps, total(runs, "kidnaps_recovered_10s_to_prior_level"));
-			md << "| " << s.name << " | " << v.name << ": " << v.label() << " | " << runs.size() << " / " << planned
+			md << "| " << s.name << " | " << v.label() << " | " << runs.size() << " / " << planned
 			   << " | " << cell(spreadOf(runs, "ate_rmse"), "%.3f") << " | "
 			   << cell(spreadOf(runs, "ate_aligned_rmse"), "%.3f") << " | " << cell(spreadOf(runs, "ate_median"), "%.3f")
 			   << " | " << cell(spreadOf(runs, "ate_mean"), "%.3f") << " | " << cell(spreadOf(runs, "rpe_1s_rmse"), "%.3f")
@@ -116,14 +116,15 @@ std::string writeBatchSummary(const BatchPlan& plan)
 			const Spread ate = spreadOf(runs, "ate_rmse"), odo = spreadOf(runs, "odometry_ate_rmse");
 			bars.insert(bars.end(), {ate.mean, odo.mean});
 			spreads.insert(spreads.end(), {ate.std, odo.std});
-			labels.push_back(s.name + " " + v.name);
+			labels.push_back(s.name + " " + std::to_string(vi + 1));
 			labels.push_back("  (odometry)");
 			colours.push_back({0, 60, 220});
 			colours.push_back({220, 0, 0});
 		}
 	std::ofstream(plan.outputDir + "/summary.md") << md.str();
 	ChartOptions o;
-	o.title = "ATE RMSE over seeds (mean +- std): vslam (blue), odometry alone (red)";
+	o.title = "ATE RMSE over seeds (mean +- std): vslam (blue), odometry alone (red); "
+			  "'scenario k': its k-th variation in summary.md";
 	o.xLabel = "";
 	o.yLabel = "ATE RMSE [m]";
 	o.width = std::max(480, 70 * int(bars.size()) + 160);

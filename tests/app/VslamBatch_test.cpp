@@ -40,6 +40,19 @@ std::string writeBatch(const TempDir& dir, bool withBadScenario)
 	return file;
 }
 
+/** The folder of the variation with this setting (folders are named by a
+ * hash of the settings): the one whose first run's command line has it. */
+std::string variationDir(const TempDir& dir, const std::string& scenario, const std::string& setting)
+{
+	for (const auto& entry : fs::directory_iterator(dir.file("out/" + scenario)))
+	{
+		const std::string command = readFile((entry.path() / "seed1" / "log.txt").string());
+		if (contains(command, "--set " + setting + "\n") || contains(command, "--set " + setting + " "))
+			return entry.path().string();
+	}
+	return "(no variation with " + setting + ")";
+}
+
 size_t countLines(const std::string& text, const std::string& part)
 {
 	std::istringstream in(text);
@@ -57,33 +70,36 @@ TEST(VslamBatch, RunsTheGridSummarizesAndResumes)
 	ASSERT_EQ(first.exitCode, 0) << first.output;
 	EXPECT_TRUE(contains(first.output, "4 run, 0 done before, 0 failed")) << first.output;
 	const std::string summary = readFile(dir.file("out/summary.md"));
-	EXPECT_EQ(countLines(summary, "| demo | v0"), 2u) << summary;
+	EXPECT_EQ(countLines(summary, "| demo | vslam_particle_filter.sampleSize="), 2u) << summary;
 	EXPECT_EQ(countLines(summary, "| 2 / 2 |"), 2u) << summary;
 	EXPECT_TRUE(fs::exists(dir.file("out/summary_ate.png")));
 	// One CSV row per run, with its seed and metrics.
-	EXPECT_EQ(countLines(readFile(dir.file("out/summary.csv")), "demo,v0"), 4u);
-	const std::string metrics = readFile(dir.file("out/demo/v02/seed2/metrics.txt"));
+	EXPECT_EQ(countLines(readFile(dir.file("out/summary.csv")), "demo,v"), 4u);
+	const std::string v30 = variationDir(dir, "demo", "vslam_particle_filter.sampleSize=30");
+	const std::string v60 = variationDir(dir, "demo", "vslam_particle_filter.sampleSize=60");
+	const std::string metrics = readFile(v60 + "/seed2/metrics.txt");
 	EXPECT_TRUE(contains(metrics, "ate_rmse ")) << metrics;
-	EXPECT_TRUE(contains(readFile(dir.file("out/demo/v02/seed2/vslam/config_used.ini")), "sampleSize = 60"));
+	EXPECT_TRUE(contains(readFile(v60 + "/seed2/vslam/config_used.ini"), "sampleSize = 60"));
 
 	// Resume: an unfinished run (no done file) runs again, the rest not.
-	const std::string path = readFile(dir.file("out/demo/v01/seed1/vslam/estimated_path.tum"));
-	fs::remove(dir.file("out/demo/v01/seed1/done"));
+	const std::string path = readFile(v30 + "/seed1/vslam/estimated_path.tum");
+	fs::remove(v30 + "/seed1/done");
 	const auto again = runCommand(kBatch + "'" + batch + "'");
 	ASSERT_EQ(again.exitCode, 0) << again.output;
 	EXPECT_TRUE(contains(again.output, "1 run, 3 done before, 0 failed")) << again.output;
-	EXPECT_EQ(readFile(dir.file("out/demo/v01/seed1/vslam/estimated_path.tum")), path);  // same seed, same run
+	EXPECT_EQ(readFile(v30 + "/seed1/vslam/estimated_path.tum"), path);  // same seed, same run
 
 	// Metrics of an older scoring are scored again from the outputs, without
 	// running vslam again.
-	const std::string metricsFile = dir.file("out/demo/v02/seed1/metrics.txt");
+	const std::string metricsFile = v60 + "/seed1/metrics.txt";
 	std::string old = readFile(metricsFile);
 	const size_t at = old.find("scoring_version ");
 	old.replace(at, old.find('\n', at) - at, "scoring_version 1");
 	std::ofstream(metricsFile) << old;
 	const auto rescored = runCommand(kBatch + "'" + batch + "'");
 	ASSERT_EQ(rescored.exitCode, 0) << rescored.output;
-	EXPECT_TRUE(contains(rescored.output, "run/demo/v02/seed1: done before, scored again")) << rescored.output;
+	EXPECT_TRUE(contains(rescored.output, "run/demo/" + fs::path(v60).filename().string() + "/seed1: done before, scored again"))
+		<< rescored.output;
 	EXPECT_TRUE(contains(rescored.output, "0 run, 4 done before, 0 failed")) << rescored.output;
 	EXPECT_FALSE(contains(readFile(metricsFile), "scoring_version 1\n"));
 }
@@ -118,7 +134,7 @@ TEST(VslamBatch, AFailedRunIsReportedAndTheOthersGoOn)
 	EXPECT_EQ(countLines(r.output, "run/bad/"), 4u) << r.output;
 	EXPECT_EQ(countLines(r.output, "FAILED: exit 3, see "), 4u) << r.output;
 	EXPECT_TRUE(contains(r.output, "4 run, 0 done before, 4 failed")) << r.output;
-	EXPECT_TRUE(contains(readFile(dir.file("out/summary.md")), "| bad | v01: vslam_particle_filter.sampleSize=30 | 0 / 2 |"));
+	EXPECT_TRUE(contains(readFile(dir.file("out/summary.md")), "| bad | vslam_particle_filter.sampleSize=30 | 0 / 2 |"));
 	const auto config = runCommand(kBatch + "'" + dir.file("nothing.ini") + "'");
 	EXPECT_EQ(config.exitCode, 2);
 	EXPECT_TRUE(contains(config.output, "no batch file")) << config.output;
