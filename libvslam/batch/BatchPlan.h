@@ -35,7 +35,7 @@ struct Scenario
 	std::string rawlog, groundTruth;  //!< fixed data (when no simulIni)
 	std::string vslamIni;
 	std::vector<std::string> vslamSet;  //!< the batch's `set`, then the scenario's
-	std::string world;  //!< floor plan for the figures (optional)
+	std::string world;  //!< floor plan under the runs' figures (optional)
 };
 
 struct Variation

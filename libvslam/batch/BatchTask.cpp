@@ -6,11 +6,13 @@
 #include <libvslam/eval/Median.h>
 #include <libvslam/eval/RelativePoseError.h>
 #include <libvslam/eval/RunFigures.h>
+#include <libvslam/world/FloorPlanFile.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -41,7 +43,7 @@ double yamlNumber(const std::string& yaml, const std::string& key)
 
 /** Bumped whenever the metrics change: finished runs are then scored again
  * from their outputs (no rerun). */
-constexpr double kScoringVersion = 3;
+constexpr double kScoringVersion = 4;
 
 /** Median error over the minute before \a t (the run's error level). */
 double errorBefore(const AteStats& ate, double t)
@@ -109,6 +111,17 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	m["peak_mib"] = peakMiB;
 	m["real_time_factor"] = wallSeconds > 0 ? m["data_s"] / wallSeconds : NAN;
 	m["scoring_version"] = kScoringVersion;
+
+	// The paper's figures of the run, as `vslam-eval --run` writes them.
+	std::optional<world::FloorPlan> floorPlan;
+	if (!s.world.empty()) floorPlan = world::loadFloorPlan(s.world, "/usr/share");
+	RunFigureSources figures;
+	figures.estimate = &estimate;
+	figures.truth = &truth;
+	figures.odometry = &odometry;
+	figures.plan = floorPlan ? &*floorPlan : nullptr;
+	figures.runDir = out;
+	writeRunFigures(figures, out + "/figures");
 	return m;
 }
 

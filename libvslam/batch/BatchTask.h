@@ -7,7 +7,8 @@
  *    the variation's overrides, then its metrics against the ground truth
  *    (metrics.txt: ATE raw and aligned, RPE over 1 s, odometry alone, kidnaps
  *    and their recovery, to 0.3 m and to the run's error level before the
- *    kidnap, wall time, peak memory).
+ *    kidnap, wall time, peak memory), and the paper's figures of the run in
+ *    vslam/figures/ (over the scenario's `world` floor plan if given).
  * A finished task leaves a `done` file holding its command line; a task
  * whose `done` matches is skipped (resume), anything else is run afresh. A
  * finished run whose metrics come from an older version of the scoring is
