@@ -8,7 +8,6 @@
 #include <libvslam/eval/MapError.h>
 #include <libvslam/eval/RelativePoseError.h>
 #include <libvslam/eval/RunFigures.h>
-#include <libvslam/eval/TrajectoryPlot.h>
 #include <libvslam/world/FloorPlanFile.h>
 
 #include <cmath>
@@ -200,28 +199,17 @@ int main(int argc, const char** argv)
 
 		std::optional<world::FloorPlan> plan;
 		if (!worldFile.empty()) plan = world::loadFloorPlan(worldFile, "/usr/share");
-		if (!plotFile.empty())
-		{
-			Trajectory aligned = estimate;
-			for (auto& p : aligned) p.pose = se2::compose(s.alignment, p.pose);
-			std::vector<PlotSeries> series;
-			if (odometry) series.push_back({&*odometry, {220, 0, 0}, "odometry", {}});
-			series.push_back({&truth, {0, 160, 0}, "ground truth", truthJumps(truth)});
-			series.push_back({&aligned, {0, 60, 220}, o.align ? "estimate (aligned)" : "estimate", {}});
-			writeTrajectoryPlot(plan ? &*plan : nullptr, series, plotFile);
-		}
+		RunFigureSources src;
+		src.estimate = &estimate;
+		src.truth = &truth;
+		src.odometry = odometry ? &*odometry : nullptr;
+		src.plan = plan ? &*plan : nullptr;
+		src.runDir = runDir;
+		src.alignment = s.alignment;
+		src.maxGap = o.maxGap;
+		if (!plotFile.empty()) writePathsFigure(src, {}, plotFile);
 		if (!figuresDir.empty())
-		{
-			RunFigureSources src;
-			src.estimate = &estimate;
-			src.truth = &truth;
-			src.odometry = odometry ? &*odometry : nullptr;
-			src.plan = plan ? &*plan : nullptr;
-			src.runDir = runDir;
-			src.alignment = s.alignment;
-			src.maxGap = o.maxGap;
 			for (const auto& f : writeRunFigures(src, figuresDir)) std::printf("figure: %s\n", f.c_str());
-		}
 		return 0;
 	}
 	catch (const std::invalid_argument& e)

@@ -80,6 +80,18 @@ std::vector<size_t> truthJumps(const Trajectory& truth)
 	return jumps;
 }
 
+void writePathsFigure(const RunFigureSources& src, const std::vector<se2::Pose>& landmarks, const std::string& pngFile)
+{
+	const bool aligned = src.alignment.x != 0 || src.alignment.y != 0 || src.alignment.phi != 0;
+	Trajectory estimate = *src.estimate;
+	for (auto& p : estimate) p.pose = se2::compose(src.alignment, p.pose);
+	std::vector<PlotSeries> paths;
+	if (src.odometry) paths.push_back({src.odometry, kOdometryRgb, "odometry", {}});
+	paths.push_back({src.truth, kTruthRgb, "ground truth", truthJumps(*src.truth)});
+	paths.push_back({&estimate, kEstimateRgb, aligned ? "estimate (aligned)" : "estimate", {}});
+	writeTrajectoryPlot(src.plan, paths, pngFile, landmarks);
+}
+
 std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std::string& folder)
 {
 	std::error_code ec;
@@ -105,18 +117,12 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 	}
 
 	// Fig. 2: the paths and the map.
-	Trajectory aligned = *src.estimate;
-	for (auto& p : aligned) p.pose = se2::compose(src.alignment, p.pose);
-	std::vector<PlotSeries> paths;
-	if (src.odometry) paths.push_back({src.odometry, kOdometryRgb, "odometry", {}});
-	paths.push_back({&truth, kTruthRgb, "ground truth", jumps});
-	paths.push_back({&aligned, kEstimateRgb, "estimate", {}});
 	std::vector<se2::Pose> landmarks;
 	std::vector<uint64_t> measurements;
 	if (!src.runDir.empty())
 		for (const auto& [key, l] : readLandmarkMap(src.runDir + "/final_map.txt", 0, 0, &measurements))
 			landmarks.push_back(se2::compose(src.alignment, {l.mean[0], l.mean[1], l.mean[2]}));
-	writeTrajectoryPlot(src.plan, paths, out("paths.png"), landmarks);
+	writePathsFigure(src, landmarks, out("paths.png"));
 	written.push_back(out("paths.png"));
 
 	// Fig. 4: position error over time.

@@ -37,6 +37,13 @@ struct RunFigureSources
  * files written. Throws InputError on unreadable inputs or outputs. */
 std::vector<std::string> writeRunFigures(const RunFigureSources& sources, const std::string& folder);
 
+/** Fig. 2 alone: the estimate (moved by the alignment; labelled "estimate
+ * (aligned)" unless that is the identity), the ground truth with its jumps
+ * as thin lines, the odometry if given and \a landmarks, over the floor plan
+ * if given. Throws InputError if the file cannot be written. */
+void writePathsFigure(
+	const RunFigureSources& sources, const std::vector<se2::Pose>& landmarks, const std::string& pngFile);
+
 /** Where a ground truth jumps (a kidnap): the indices i whose step from
  * i - 1 is over 0.5 m and over 20 times the median step. */
 std::vector<size_t> truthJumps(const Trajectory& truth);
