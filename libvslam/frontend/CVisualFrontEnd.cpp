@@ -15,6 +15,15 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 /** A landmark is expected in view when the robot is near where it was
  * built and looks the same way (odometry only: the front-end has no map). */
+TScaleRefinementSettings scaleSettings(const TVisualFrontEndOptions& o)
+{
+	TScaleRefinementSettings s;
+	s.odometrySigma = o.scale_odometry_sigma;
+	s.pairMinTravel = o.scale_pair_min_travel;
+	s.pairMaxTravel = o.scale_pair_max_travel;
+	return s;
+}
+
 bool expectedInView(const mrpt::poses::CPose2D& createdAt, const mrpt::poses::CPose2D& now)
 {
 	constexpr double kNear = 0.5, kSameWay = 20 * M_PI / 180;
@@ -33,6 +42,8 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 {
 	Output out;
 	m_images++;
+	if (m_lastOdometry) m_travelled += (odometryPose - *m_lastOdometry).norm();
+	m_lastOdometry = odometryPose;
 	auto t = Clock::now();
 	const cv::Mat pixels = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
 	if (pixels.empty()) throw std::runtime_error(what + ": the image is empty or could not be loaded");
@@ -54,7 +65,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	for (const auto& c : candidates)
 	{
 		VisualLandmarkModel* lm = m_database.find(c.id);
-		const auto m = recognizeLandmark(view.features, *lm, obs.cameraPose, m_options);
+		auto m = recognizeLandmark(view.features, *lm, obs.cameraPose, m_options);
 		if (!m) continue;
 		lm->recognitions++;
 		lm->missesInARow = 0;
@@ -67,6 +78,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 			m_poorlyConditioned++;
 			continue;
 		}
+		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		auto o = CObservationVisualLandmark::Create();
 		o->timestamp = obs.timestamp;
 		o->sensorLabel = obs.sensorLabel;
@@ -96,8 +108,13 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		if (static_cast<int>(m_views.size()) >= m_options.creation_views)
 		{
 			std::vector<const CreationView*> ptrs;
+			double baseline = 0;
 			for (size_t i = m_views.size() - m_options.creation_views; i < m_views.size(); i++)
+			{
 				ptrs.push_back(&m_views[i].first);
+				if (ptrs.size() > 1)
+					baseline += (m_views[i].second - m_views[i - 1].second).norm();
+			}
 			auto result = createLandmark(ptrs, obs.cameraPose, m_options);
 			if (result.landmark)
 			{
@@ -114,6 +131,8 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 				c->sensorPoseOnRobot = obs.cameraPose;
 				out.created.push_back(c);
 				result.landmark->createdAtOdometry = odometryPose;
+				if (m_options.scale_refinement)
+					result.landmark->scale = LandmarkScaleTrack(baseline, scaleSettings(m_options));
 				m_database.insert(std::move(*result.landmark));
 				m_views.clear();
 			}
@@ -129,6 +148,30 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	m_total.pose += out.seconds.pose;
 	m_total.creation += out.seconds.creation;
 	return out;
+}
+
+void CVisualFrontEnd::refineScale(VisualLandmarkModel& lm, VisualMeasurement& m,
+	const mrpt::poses::CPose2D& odometryPose, const mrpt::poses::CPose3D& mount)
+{
+	const mrpt::poses::CPose3D cameraInLandmark = m.robotInLandmark + mount;
+	const mrpt::poses::CPose3D cameraInOdometry = mrpt::poses::CPose3D(odometryPose) + mount;
+	ScaleSighting s;
+	s.cameraInLandmark = {cameraInLandmark.x(), cameraInLandmark.y()};
+	s.headingInLandmark = m.robotInLandmark.yaw();
+	s.stdPosition = m.stdPosition;
+	s.cameraInOdometry = {cameraInOdometry.x(), cameraInOdometry.y()};
+	s.headingInOdometry = odometryPose.phi();
+	s.travelled = m_travelled;
+	const double factor = lm.scale.addSighting(s);
+	if (factor == 1) return;
+	for (auto& p : lm.points) p *= factor;
+	// The landmark's lengths changed, so did the camera's position in its
+	// frame; the robot's follows through the mount (in metres).
+	const mrpt::poses::CPose3D rescaledCamera(factor * cameraInLandmark.x(), factor * cameraInLandmark.y(),
+		factor * cameraInLandmark.z(), cameraInLandmark.yaw(), cameraInLandmark.pitch(), cameraInLandmark.roll());
+	m.robotInLandmark = rescaledCamera + (mrpt::poses::CPose3D() - mount);
+	m.landmarkInRobot = mrpt::poses::CPose2D() -
+		mrpt::poses::CPose2D(m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw());
 }
 
 void CVisualFrontEnd::prune(

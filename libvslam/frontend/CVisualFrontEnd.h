@@ -11,6 +11,7 @@
  */
 #include <libvslam/frontend/CLandmarkDatabase.h>
 #include <libvslam/frontend/LandmarkCreator.h>
+#include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
@@ -18,6 +19,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +61,10 @@ class CVisualFrontEnd
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
 
    private:
+	/** Refines the scale of the landmark just recognized in `m` from this
+	 * sighting; rescales its points and `m` when the estimate moves. */
+	void refineScale(VisualLandmarkModel& landmark, VisualMeasurement& m, const mrpt::poses::CPose2D& odometryPose,
+		const mrpt::poses::CPose3D& mount);
 	void prune(const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out);
 
 	TVisualFrontEndOptions m_options;
@@ -68,6 +74,8 @@ class CVisualFrontEnd
 	 * the odometry pose each was taken at. */
 	std::deque<std::pair<CreationView, mrpt::poses::CPose2D>> m_views;
 	int64_t m_nextId = 1;
+	double m_travelled = 0;  //!< odometry path length so far, m
+	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
 	StageSeconds m_total;
 	size_t m_images = 0;
 	size_t m_poorlyConditioned = 0;

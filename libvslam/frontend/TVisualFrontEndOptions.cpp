@@ -38,6 +38,12 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range::positive());
 	creation_odometry_sigma_rel =
 		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range::positive());
+	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
+	scale_odometry_sigma = readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::positive());
+	scale_pair_min_travel =
+		readDouble(c, s, "scale_pair_min_travel", scale_pair_min_travel, Range::positive());
+	scale_pair_max_travel =
+		readDouble(c, s, "scale_pair_max_travel", scale_pair_max_travel, Range::positive());
 	recognition_min_votes = readCount("recognition_min_votes", recognition_min_votes, 1, 100000);
 	recognition_max_candidates =
 		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);
@@ -68,6 +74,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	cy = readDouble(c, s, "cy", cy, Range::nonNegative());
 	if (creation_max_baseline < creation_min_baseline)
 		throw ConfigError("[" + s + "] creation_max_baseline must be >= creation_min_baseline");
+	if (scale_pair_max_travel < scale_pair_min_travel)
+		throw ConfigError("[" + s + "] scale_pair_max_travel must be >= scale_pair_min_travel");
 	if (creation_max_points < creation_min_points)
 		throw ConfigError("[" + s + "] creation_max_points must be >= creation_min_points");
 	if ((fx > 0) != (fy > 0))
@@ -91,6 +99,10 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
 	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
+	c.write(s, "scale_refinement", scale_refinement, 30, 10, "Refine landmark scales from later sightings and odometry");
+	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (the motion model's sigma_T)");
+	c.write(s, "scale_pair_min_travel", scale_pair_min_travel, 30, 10, "Travel between paired sightings, at least [m]");
+	c.write(s, "scale_pair_max_travel", scale_pair_max_travel, 30, 10, "Travel between paired sightings, at most [m]");
 	c.write(s, "recognition_min_votes", recognition_min_votes, 30, 10, "Feature votes that make a landmark a candidate");
 	c.write(s, "recognition_max_candidates", recognition_max_candidates, 30, 10, "Candidates tried per image");
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");

@@ -43,6 +43,15 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double creation_odometry_sigma_deg = 1.0;
 	double creation_odometry_sigma_rel = 0.05;
 
+	/** Refine each landmark's scale from its later sightings against the
+	 * odometry between them (LandmarkScaleTrack.h). */
+	bool scale_refinement = true;
+	/** The odometry's translation noise, m/sqrt(m) travelled (the motion
+	 * model's sigma_T). */
+	double scale_odometry_sigma = 0.05;
+	double scale_pair_min_travel = 0.3;  //!< m of travel between paired sightings, at least
+	double scale_pair_max_travel = 2.0;  //!< ... and at most
+
 	// Database and recognition
 	/** A landmark is a candidate when this many image features vote for it. */
 	int recognition_min_votes = 10;

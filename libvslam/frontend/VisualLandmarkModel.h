@@ -4,6 +4,7 @@
  * landmark frame (the robot pose at creation: x forward, y left, z up),
  * their descriptors and bookkeeping. Not the images.
  */
+#include <libvslam/frontend/LandmarkScaleTrack.h>
 #include <mrpt/poses/CPose2D.h>
 #include <opencv2/core.hpp>
 
@@ -26,6 +27,8 @@ struct VisualLandmarkModel
 	int recognitions = 0;
 	int missesInARow = 0;
 	double lastSeen = 0;  //!< s
+	/** Its scale, refined from later sightings (scale_refinement). */
+	LandmarkScaleTrack scale;
 
 	/** Bytes this landmark takes in memory (points, descriptors, fields). */
 	size_t bytes() const

@@ -1,0 +1,156 @@
+/** The scale track against sightings of a landmark whose scale error is
+ * known: a robot drives past a landmark built k times too large, with
+ * odometry noise of the stated sigma_T and pose-solve noise of the stated
+ * sigma_v; the estimate must find k within its own stated uncertainty, and
+ * that uncertainty must match the scatter over many seeds. */
+#include <gtest/gtest.h>
+#include <libvslam/frontend/LandmarkScaleTrack.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cmath>
+#include <random>
+
+using namespace vslam;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+struct DriveSettings
+{
+	double trueScaleError = 1.10;
+	double odometrySigma = 0.05;  //!< m / sqrt(m)
+	double visualSigma = 0.02;  //!< m
+	double step = 0.1;  //!< m between sightings
+	int sightings = 40;
+	int outlierAt = -1;  //!< this sighting's solve is 1 m off
+	double noise = 1;  //!< scales the noise drawn (the stated sigmas stay)
+};
+
+struct DriveResult
+{
+	LandmarkScaleTrack track;
+	double productOfFactors = 1;
+};
+
+/** A robot drives an arc past a landmark whose frame sits at an arbitrary
+ * pose in the world (so the landmark and odometry frames differ); the
+ * camera sits at the robot's origin. */
+DriveResult drive(const DriveSettings& d, unsigned seed)
+{
+	std::mt19937 rng(seed);
+	std::normal_distribution<double> unit(0, 1);
+	TScaleRefinementSettings settings;
+	settings.odometrySigma = d.odometrySigma;
+	DriveResult r{LandmarkScaleTrack(0.3, settings)};
+	const CPose2D landmarkInWorld(1.0, 2.0, 0.7);
+	CPose2D odometry(-3, 4, -1.2);  // the odometry frame is anywhere, too
+	CPose2D truth(0, 0, 0.2);
+	double travelled = 0;
+	for (int i = 0; i < d.sightings; i++)
+	{
+		if (i > 0)
+		{
+			const CPose2D move(d.step, 0, 0.03);
+			truth = truth + move;
+			const double noise = d.noise * d.odometrySigma * std::sqrt(d.step);
+			odometry = odometry + CPose2D(d.step + noise * unit(rng), noise * unit(rng), 0.03);
+			travelled += d.step;
+		}
+		const CPose2D trueInLandmark = truth - landmarkInWorld;
+		ScaleSighting s;
+		const double a = r.track.appliedFactor() * d.trueScaleError;  // the landmark's current units
+		s.cameraInLandmark = {a * trueInLandmark.x() + d.noise * d.visualSigma * unit(rng),
+			a * trueInLandmark.y() + d.noise * d.visualSigma * unit(rng)};
+		if (i == d.outlierAt) s.cameraInLandmark.x += 1.0;
+		s.headingInLandmark = trueInLandmark.phi();
+		s.stdPosition = d.visualSigma;
+		s.cameraInOdometry = {odometry.x(), odometry.y()};
+		s.headingInOdometry = odometry.phi();
+		s.travelled = travelled;
+		r.productOfFactors *= r.track.addSighting(s);
+	}
+	return r;
+}
+}  // namespace
+
+TEST(LandmarkScaleTrack, FindsTheScaleErrorWithinItsStatedUncertainty)
+{
+	const DriveSettings d;
+	for (unsigned seed = 1; seed <= 10; seed++)
+	{
+		const auto r = drive(d, seed);
+		EXPECT_GT(r.track.pairsUsed(), 8);
+		EXPECT_LT(std::abs(r.track.scaleError() - d.trueScaleError), 3.5 * r.track.scaleErrorStd()) << "seed " << seed;
+		// The prior alone (0.3 m baseline) is 9%; 3.9 m of sightings bring it below 4%.
+		EXPECT_LT(r.track.scaleErrorStd(), 0.04);
+	}
+}
+
+TEST(LandmarkScaleTrack, StatedUncertaintyMatchesTheScatterOverSeeds)
+{
+	const DriveSettings d;
+	double sumSq = 0, stated = 0;
+	const int seeds = 400;
+	for (int seed = 1; seed <= seeds; seed++)
+	{
+		const auto r = drive(d, static_cast<unsigned>(seed));
+		sumSq += std::pow(r.track.scaleError() - d.trueScaleError, 2);
+		stated += r.track.scaleErrorStd() / seeds;
+	}
+	const double scatter = std::sqrt(sumSq / seeds);
+	// The prior pulls towards k = 1, so the estimate is biased by
+	// (1 - k) * prior share; with that the scatter stays within 1.5x the stated std.
+	EXPECT_LT(scatter, 1.5 * stated);
+	EXPECT_GT(scatter, stated / 1.5);
+}
+
+TEST(LandmarkScaleTrack, ReturnedFactorsBringTheLandmarkToTheEstimate)
+{
+	const auto r = drive(DriveSettings{}, 3);
+	EXPECT_NEAR(r.productOfFactors, r.track.appliedFactor(), 1e-12);
+	EXPECT_NEAR(r.track.appliedFactor() * r.track.scaleError(), 1.0, 1e-12);
+	// The landmark's corrected lengths are near the truth.
+	EXPECT_NEAR(r.track.appliedFactor() * 1.10, 1.0, 3.5 * r.track.scaleErrorStd());
+}
+
+TEST(LandmarkScaleTrack, WithNoiseFreeDataOnlyThePriorKeepsItFromTheTruth)
+{
+	DriveSettings d;
+	d.noise = 0;
+	const auto r = drive(d, 1);
+	// Every pair measures k exactly: the estimate is the information-weighted
+	// mean of the prior (k = 1, information 0.3 m / sigma_T^2) and the truth.
+	const double prior = 0.3 / (d.odometrySigma * d.odometrySigma);
+	const double information = 1 / std::pow(r.track.scaleErrorStd(), 2);
+	EXPECT_EQ(r.track.pairsRejected(), 0);
+	EXPECT_GT(information, 5 * prior);
+	EXPECT_NEAR(r.track.scaleError(), (prior + d.trueScaleError * (information - prior)) / information, 1e-9);
+}
+
+TEST(LandmarkScaleTrack, AWrongRecognitionIsGatedOut)
+{
+	DriveSettings d;
+	d.outlierAt = 20;
+	const auto clean = drive(DriveSettings{}, 5);
+	const auto withOutlier = drive(d, 5);
+	EXPECT_GE(withOutlier.track.pairsRejected(), 1);
+	EXPECT_EQ(clean.track.pairsRejected(), 0);
+	EXPECT_NEAR(withOutlier.track.scaleError(), clean.track.scaleError(), 2 * clean.track.scaleErrorStd());
+	EXPECT_LT(std::abs(withOutlier.track.scaleError() - d.trueScaleError), 3.5 * withOutlier.track.scaleErrorStd());
+}
+
+TEST(LandmarkScaleTrack, SightingsTooFarApartFormNoPair)
+{
+	DriveSettings d;
+	d.step = 2.5;  // beyond pairMaxTravel = 2 m: odometry drift would dominate
+	d.sightings = 10;
+	const auto r = drive(d, 1);
+	EXPECT_EQ(r.track.pairsUsed(), 0);
+	EXPECT_EQ(r.track.appliedFactor(), 1.0);
+	EXPECT_NEAR(r.track.scaleErrorStd(), 0.05 / std::sqrt(0.3), 1e-12);
+}
+
+TEST(LandmarkScaleTrack, RejectsANonPositiveBaseline)
+{
+	EXPECT_THROW(LandmarkScaleTrack(0.0, TScaleRefinementSettings{}), std::invalid_argument);
+}
