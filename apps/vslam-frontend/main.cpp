@@ -8,14 +8,19 @@
  * filter can be tested and timed separately.
  *
  *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]
- *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE]]
+ *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE]]
  *
  * With --ground-truth (TUM or rbpf-slam path of the robot, e.g. from
  * vslam-simul), it also prints how right the measurements are: errors of
  * all measurements and of those the pre-filter ([vslam_prefilter] of the
  * INI) accepts, and the share of accepted ones beyond 3 sigma of
  * [vslam_visual]'s Sigma_vis; --accuracy-csv writes every measurement
- * with its truth.
+ * with its truth. --oracle-rawlog writes a second rawlog, the same but with
+ * every landmark measurement replaced by its truth (same landmarks, same
+ * recognitions, same statistics; measurements without truth dropped): fed
+ * to vslam, it shows what the filter makes of a front-end with no
+ * measurement error, which separates the front-end's share of a run's
+ * error from the filter's.
  */
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
@@ -72,9 +77,41 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	std::fclose(f);
 }
 
+/** Replaces every landmark measurement in `steps` by its truth (the
+ * landmark frame's true pose seen from the robot's true pose); those
+ * without truth are dropped. */
+void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, const std::string& groundTruthFile)
+{
+	using namespace vslam;
+	constexpr double kMaxGap = 1.0;  // s between ground-truth samples, as in MeasurementAccuracy
+	const Trajectory truth = readTrajectory(groundTruthFile);
+	std::map<int64_t, se2::Pose> frameOf;
+	for (auto& [action, sf] : steps)
+	{
+		std::vector<mrpt::obs::CObservation::Ptr> kept;
+		for (const auto& o : *sf)
+		{
+			if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
+				if (const auto frame = interpolate(truth, mrpt::Clock::toDouble(c->timestamp), kMaxGap))
+					frameOf[c->landmarkID] = *frame;
+			if (auto* m = dynamic_cast<CObservationVisualLandmark*>(o.get()))
+			{
+				const auto frame = frameOf.find(m->landmarkID);
+				const auto now = interpolate(truth, mrpt::Clock::toDouble(m->timestamp), kMaxGap);
+				if (frame == frameOf.end() || !now) continue;
+				const se2::Pose z = se2::between(*now, frame->second);
+				m->relPose = mrpt::poses::CPose2D(z.x, z.y, z.phi);
+			}
+			kept.push_back(o);
+		}
+		sf->clear();
+		for (auto& o : kept) sf->insert(o);
+	}
+}
+
 const char* kUsage =
 	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]\n"
-	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE]]\n"
+	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE]]\n"
 	"       vslam-frontend --print-default-config\n";
 }
 
@@ -85,7 +122,7 @@ int main(int argc, const char** argv)
 	return vslam::runTool("vslam-frontend", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
-		std::string iniFile, groundTruthFile, csvFile;
+		std::string iniFile, groundTruthFile, csvFile, oracleFile;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
@@ -99,7 +136,9 @@ int main(int argc, const char** argv)
 				std::cout << config::toIniText(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
 				return 0;
 			}
-			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv") && i + 1 >= argc)
+			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv" ||
+					a == "--oracle-rawlog") &&
+				i + 1 >= argc)
 				throw std::invalid_argument(a + " needs a value");
 			if (a == "--set")
 				overrides.push_back(config::parseOverride(argv[++i]));
@@ -109,12 +148,16 @@ int main(int argc, const char** argv)
 				groundTruthFile = argv[++i];
 			else if (a == "--accuracy-csv")
 				csvFile = argv[++i];
+			else if (a == "--oracle-rawlog")
+				oracleFile = argv[++i];
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "'");
 			else
 				positional.push_back(a);
 		}
 		if (positional.size() != 2) throw std::invalid_argument("expected IN.rawlog OUT.rawlog");
+		if ((!csvFile.empty() || !oracleFile.empty()) && groundTruthFile.empty())
+			throw std::invalid_argument("--accuracy-csv and --oracle-rawlog need --ground-truth");
 		const TVisualFrontEndOptions options = loadFrontEndOptions(iniFile, overrides);
 
 		const auto start = std::chrono::steady_clock::now();
@@ -161,7 +204,17 @@ int main(int argc, const char** argv)
 				  << "vslam-frontend: ms per image: features " << perImage(t.features) << ", search "
 				  << perImage(t.search) << ", pose " << perImage(t.pose) << ", creation "
 				  << perImage(t.creation) << "; total " << seconds << " s -> " << positional[1] << "\n";
+		std::cout << "vslam-frontend: landmark creation: " << frontEnd.creationAttempts() << " attempts, "
+				  << total.created << " built";
+		for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
+		std::cout << "\n";
 		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, iniFile, csvFile);
+		if (!oracleFile.empty())
+		{
+			replaceMeasurementsWithTruth(steps, groundTruthFile);
+			writeActionFrameRawlog(oracleFile, steps);
+			std::cout << "vslam-frontend: the same with true measurements -> " << oracleFile << "\n";
+		}
 		return 0;
 	});
 }

@@ -372,6 +372,8 @@ int CVSlamApp::run()
 		frontEndSummary.landmarks = db.size();
 		frontEndSummary.bytesPerLandmark = db.size() ? double(db.landmarkBytes()) / db.size() : 0.0;
 		frontEndSummary.indexBytes = static_cast<double>(db.indexBytes());
+		frontEndSummary.creationAttempts = frontEnd->creationAttempts();
+		frontEndSummary.creationRejections = frontEnd->creationRejections();
 		summary.frontEnd = frontEndSummary;
 	}
 

@@ -125,7 +125,12 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 		  << "  index_bytes: " << e.indexBytes << "\n"
 		  << "  ms_per_image: {features: " << perImage(e.featuresSeconds) << ", search: "
 		  << perImage(e.searchSeconds) << ", pose: " << perImage(e.poseSeconds)
-		  << ", creation: " << perImage(e.creationSeconds) << "}\n";
+		  << ", creation: " << perImage(e.creationSeconds) << "}\n"
+		  << "  creation_attempts: " << e.creationAttempts << "\n"
+		  << "  creation_rejected:";
+		if (e.creationRejections.empty()) o << " {}";
+		o << "\n";
+		for (const auto& [why, count] : e.creationRejections) o << "    \"" << why << "\": " << count << "\n";
 	}
 	if (ate || odometryAte)
 	{

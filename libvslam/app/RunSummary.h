@@ -6,6 +6,7 @@
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,8 @@ struct RunSummary
 		size_t images = 0, measurements = 0, created = 0, pruned = 0, landmarks = 0;
 		double featuresSeconds = 0, searchSeconds = 0, poseSeconds = 0, creationSeconds = 0;
 		double bytesPerLandmark = 0, indexBytes = 0;
+		size_t creationAttempts = 0;
+		std::map<std::string, size_t> creationRejections;  //!< by reason
 	};
 	std::optional<FrontEnd> frontEnd;
 

@@ -3,6 +3,7 @@
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 
@@ -15,6 +16,27 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 /** A landmark is expected in view when the robot is near where it was
  * built and looks the same way (odometry only: the front-end has no map). */
+/** A reason with its numbers replaced by "N", to count reasons. */
+std::string withoutNumbers(const std::string& text)
+{
+	std::string out;
+	size_t i = 0;
+	while (i < text.size())
+	{
+		size_t end = i;
+		while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) end++;
+		if (end == i)
+			out += text[i++];
+		else
+		{
+			const bool partOfWord = end < text.size() && text[end] == '-';  // "3-D"
+			out += partOfWord ? text.substr(i, end - i) : std::string("N");
+			i = end;
+		}
+	}
+	return out;
+}
+
 TScaleRefinementSettings scaleSettings(const TVisualFrontEndOptions& o)
 {
 	TScaleRefinementSettings s;
@@ -116,6 +138,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 					baseline += (m_views[i].second - m_views[i - 1].second).norm();
 			}
 			auto result = createLandmark(ptrs, obs.cameraPose, m_options);
+			m_creationAttempts++;
 			if (result.landmark)
 			{
 				result.landmark->id = m_nextId++;
@@ -137,7 +160,10 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 				m_views.clear();
 			}
 			else
+			{
+				m_creationRejections[withoutNumbers(result.why)]++;
 				m_views.pop_front();  // try again with a newer set
+			}
 		}
 	}
 	out.seconds.creation = since(t);

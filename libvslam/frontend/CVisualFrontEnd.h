@@ -19,6 +19,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <deque>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +60,10 @@ class CVisualFrontEnd
 	/** Recognitions dropped for their predicted uncertainty
 	 * (recognition_max_std_xy / _phi). */
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
+	/** Landmark creations tried, and those rejected by reason (the
+	 * creator's reason with its numbers replaced by "N"). */
+	size_t creationAttempts() const { return m_creationAttempts; }
+	const std::map<std::string, size_t>& creationRejections() const { return m_creationRejections; }
 
    private:
 	/** Refines the scale of the landmark just recognized in `m` from this
@@ -79,5 +84,7 @@ class CVisualFrontEnd
 	StageSeconds m_total;
 	size_t m_images = 0;
 	size_t m_poorlyConditioned = 0;
+	size_t m_creationAttempts = 0;
+	std::map<std::string, size_t> m_creationRejections;
 };
 }  // namespace vslam

@@ -3,12 +3,20 @@
  * with the front-end in the loop, and a missing image. Images come from
  * the textured-room fixture (tests/support/RoomImageRawlog.h). */
 #include <gtest/gtest.h>
+#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/io/RawlogWriting.h>
+#include <libvslam/obs/CObservationLandmarkCreated.h>
+#include <libvslam/obs/CObservationVisualLandmark.h>
+#include <libvslam/obs/registerClasses.h>
+#include <mrpt/math/wrap2pi.h>
 #include <tests/support/RoomImageRawlog.h>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 
 using vslam::testing::readFile;
@@ -120,4 +128,75 @@ TEST(VisualPipeline, MissingImageFileNamesTheImageAndTheEntry)
 	const auto fe = runCommand(quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")));
 	EXPECT_EQ(fe.exitCode, 3) << fe.output;
 	EXPECT_NE(fe.output.find("img_5.png"), std::string::npos) << fe.output;
+}
+
+namespace
+{
+struct RecordedMeasurement
+{
+	double t = 0;
+	int64_t id = -1;
+	mrpt::poses::CPose2D z;
+};
+
+/** The landmark measurements of a measurement rawlog, and when each
+ * landmark was created. */
+std::vector<RecordedMeasurement> readMeasurements(const std::string& file, std::map<int64_t, double>& createdAt)
+{
+	std::vector<RecordedMeasurement> out;
+	vslam::CRawlogReader reader(file);
+	vslam::RawlogStep step;
+	while (reader.next(step))
+		for (const auto& o : *step.sf)
+		{
+			if (const auto* m = dynamic_cast<const vslam::CObservationVisualLandmark*>(o.get()))
+				out.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID, m->relPose});
+			else if (const auto* c = dynamic_cast<const vslam::CObservationLandmarkCreated*>(o.get()))
+				createdAt[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
+		}
+	return out;
+}
+}  // namespace
+
+TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements)
+{
+	vslam::registerObservationClasses();
+	TempDir dir;
+	const std::string rawlog = dir.file("room.rawlog");
+	vslam::testing::RoomRawlogOptions o;
+	o.laps = 1.5;
+	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
+	const std::string fe = quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog"));
+	const auto r = runCommand(fe + " --ground-truth " + quoted(truthFile) + " --oracle-rawlog " + quoted(dir.file("oracle.rawlog")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::map<int64_t, double> createdAt, createdAtOracle;
+	const auto measured = readMeasurements(dir.file("m.rawlog"), createdAt);
+	const auto oracle = readMeasurements(dir.file("oracle.rawlog"), createdAtOracle);
+	ASSERT_GT(measured.size(), 20u);
+	ASSERT_EQ(oracle.size(), measured.size());  // the truth covers the whole run
+	EXPECT_EQ(createdAtOracle, createdAt);
+	const auto truth = vslam::readTrajectory(truthFile);
+	size_t differ = 0;
+	for (size_t i = 0; i < oracle.size(); i++)
+	{
+		EXPECT_EQ(oracle[i].t, measured[i].t);
+		EXPECT_EQ(oracle[i].id, measured[i].id);
+		const auto now = vslam::interpolate(truth, oracle[i].t, 1.0);
+		const auto frame = vslam::interpolate(truth, createdAt.at(oracle[i].id), 1.0);
+		ASSERT_TRUE(now && frame);
+		// The landmark frame (the robot's true pose when it was created)
+		// seen from the robot's true pose now.
+		const mrpt::poses::CPose2D expected =
+			mrpt::poses::CPose2D(frame->x, frame->y, frame->phi) - mrpt::poses::CPose2D(now->x, now->y, now->phi);
+		EXPECT_NEAR((oracle[i].z - expected).norm(), 0, 1e-6);
+		EXPECT_NEAR(mrpt::math::wrapToPi(oracle[i].z.phi() - expected.phi()), 0, 1e-6);
+		EXPECT_LT((measured[i].z - expected).norm(), 0.3);  // the front-end's own error stays small
+		differ += (measured[i].z - expected).norm() > 1e-4;
+	}
+	EXPECT_GT(differ, measured.size() / 2);  // the measured file is not the truth
+
+	const auto noTruth = runCommand(fe + " --oracle-rawlog " + quoted(dir.file("o2.rawlog")));
+	EXPECT_EQ(noTruth.exitCode, 1) << noTruth.output;  // a usage error
+	EXPECT_NE(noTruth.output.find("--ground-truth"), std::string::npos) << noTruth.output;
 }

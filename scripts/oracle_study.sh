@@ -1,0 +1,73 @@
+#!/bin/bash
+# How much of vslam's error is the front-end's and how much the filter's
+# (doc/results.md section 9.6). For every rendered rawlog of a batch
+# scenario (BATCH_OUT/SCENARIO/data_seed*/sim.rawlog, e.g. from
+# config_ini/batches/paper_experiments.ini), the front-end runs once
+# (vslam-frontend, cached in OUT_DIR) and writes two measurement rawlogs:
+# its own measurements, and the same recognitions with the true measurement
+# each (--oracle-rawlog). The filter then runs on both with filter seeds
+# 1..FILTER_SEEDS (the filter alone takes about a second per run), and the
+# table gives the ATE RMSE (raw and SE(2)-aligned) and median, mean over the
+# filter seeds, for each rawlog and over all.
+#
+#   scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
+#
+# The --set options go to both the front-end and the filter runs (vslam
+# section keys to vslam, vslam_frontend keys to both). FILTER_SEEDS: 4.
+# Example:
+#   scripts/oracle_study.sh batch_out/paper_experiments living_room /tmp/oracle
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BIN="${VSLAM_BIN:-$ROOT/build/bin}"
+INI="$ROOT/config_ini/demo_rendered.ini"
+usage="usage: oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]"
+ARGS=()
+while [[ $# -gt 0 && "$1" != "--" ]]; do ARGS+=("$1"); shift; done
+[[ "${1:-}" == "--" ]] && shift
+[[ ${#ARGS[@]} -ge 3 && ${#ARGS[@]} -le 4 ]] || { echo "$usage" >&2; exit 1; }
+BATCH="${ARGS[0]}" SCENARIO="${ARGS[1]}" OUT="${ARGS[2]}" SEEDS="${ARGS[3]:-4}"
+SETS=("$@")
+FRONTEND_SETS=()
+for ((i = 0; i < ${#SETS[@]}; i++)); do
+  [[ "${SETS[$i]}" == "--set" && "${SETS[$((i + 1))]:-}" == vslam_frontend.* ]] &&
+    FRONTEND_SETS+=(--set "${SETS[$((i + 1))]}")
+done
+shopt -s nullglob
+DATA=("$BATCH/$SCENARIO"/data_seed*/sim.rawlog)
+[[ ${#DATA[@]} -gt 0 ]] || { echo "error: no $BATCH/$SCENARIO/data_seed*/sim.rawlog" >&2; exit 1; }
+mkdir -p "$OUT"
+# A key for the front-end settings, so cached measurement rawlogs match them.
+KEY="$(printf '%s ' "${FRONTEND_SETS[@]:-}" | md5sum | cut -c1-8)"
+
+# Mean over the filter seeds: raw RMSE, aligned RMSE, raw median.
+filter_runs() { # MEASUREMENT_RAWLOG GROUND_TRUTH
+  for ((s = 1; s <= SEEDS; s++)); do
+    local o="$OUT/run_$$"
+    "$BIN/vslam" "$INI" "$1" --quiet --out "$o" --set vslam.ground_truth_file="$2" \
+      --set vslam.RANDOM_SEED="$s" "${SETS[@]}" > /dev/null
+    local raw aligned
+    raw="$(grep '^  vslam:' "$o/run_summary.yaml")"
+    aligned="$(grep '^  vslam_se2_aligned:' "$o/run_summary.yaml")"
+    echo "$(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$aligned") $(sed 's/.* median: \([0-9.]*\),.*/\1/' <<< "$raw")"
+    rm -rf "$o"
+  done | awk '{r += $1; a += $2; m += $3; n++} END {printf "%.3f %.3f %.3f\n", r / n, a / n, m / n}'
+}
+
+echo "| rawlog | measured: RMSE / aligned / median | true measurements: RMSE / aligned / median |"
+echo "|---|---|---|"
+TOTAL=""
+for rawlog in "${DATA[@]}"; do
+  dir="$(dirname "$rawlog")" name="$(basename "$(dirname "$rawlog")")"
+  gt="$(realpath "$dir/sim_groundtruth.tum")"
+  measured="$OUT/${SCENARIO}_${name}_$KEY.rawlog" oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle.rawlog"
+  if [[ ! -s "$oracle" ]]; then
+    "$BIN/vslam-frontend" "$rawlog" "$measured" --config "$INI" "${FRONTEND_SETS[@]}" \
+      --ground-truth "$gt" --oracle-rawlog "$oracle.part" > "$OUT/${SCENARIO}_${name}_$KEY.log"
+    mv "$oracle.part" "$oracle"
+  fi
+  m="$(filter_runs "$measured" "$gt")" t="$(filter_runs "$oracle" "$gt")"
+  echo "| $SCENARIO $name | $(tr ' ' '/' <<< "$m" | sed 's|/| / |g') | $(tr ' ' '/' <<< "$t" | sed 's|/| / |g') |"
+  TOTAL+="$m $t"$'\n'
+done
+awk 'NF == 6 {for (i = 1; i <= 6; i++) s[i] += $i; n++}
+  END {printf "| **mean** | **%.3f** / %.3f / %.3f | **%.3f** / %.3f / %.3f |\n", s[1]/n, s[2]/n, s[3]/n, s[4]/n, s[5]/n, s[6]/n}' <<< "$TOTAL"
