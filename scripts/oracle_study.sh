@@ -43,13 +43,17 @@ KEY="$(printf '%s ' "${FRONTEND_SETS[@]:-}" | md5sum | cut -c1-8)"
 filter_runs() { # MEASUREMENT_RAWLOG GROUND_TRUTH
   for ((s = 1; s <= SEEDS; s++)); do
     local o="$OUT/run_$$"
-    "$BIN/vslam" "$INI" "$1" --quiet --out "$o" --set vslam.ground_truth_file="$2" \
-      --set vslam.RANDOM_SEED="$s" "${SETS[@]}" > /dev/null
+    if ! "$BIN/vslam" "$INI" "$1" --quiet --out "$o" --set vslam.ground_truth_file="$2" \
+      --set vslam.RANDOM_SEED="$s" "${SETS[@]}" > "$OUT/run_$$.log" 2>&1; then
+      echo "error: vslam failed on $1 (seed $s):" >&2
+      cat "$OUT/run_$$.log" >&2
+      exit 1
+    fi
     local raw aligned
     raw="$(grep '^  vslam:' "$o/run_summary.yaml")"
     aligned="$(grep '^  vslam_se2_aligned:' "$o/run_summary.yaml")"
     echo "$(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$aligned") $(sed 's/.* median: \([0-9.]*\),.*/\1/' <<< "$raw")"
-    rm -rf "$o"
+    rm -rf "$o" "$OUT/run_$$.log"
   done | awk '{r += $1; a += $2; m += $3; n++} END {printf "%.3f %.3f %.3f\n", r / n, a / n, m / n}'
 }
 
@@ -65,7 +69,8 @@ for rawlog in "${DATA[@]}"; do
       --ground-truth "$gt" --oracle-rawlog "$oracle.part" > "$OUT/${SCENARIO}_${name}_$KEY.log"
     mv "$oracle.part" "$oracle"
   fi
-  m="$(filter_runs "$measured" "$gt")" t="$(filter_runs "$oracle" "$gt")"
+  m="$(filter_runs "$measured" "$gt")" || exit 1
+  t="$(filter_runs "$oracle" "$gt")" || exit 1
   echo "| $SCENARIO $name | $(tr ' ' '/' <<< "$m" | sed 's|/| / |g') | $(tr ' ' '/' <<< "$t" | sed 's|/| / |g') |"
   TOTAL+="$m $t"$'\n'
 done

@@ -84,6 +84,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	out.seconds.search = since(t);
 	t = Clock::now();
 	std::vector<int64_t> recognized;
+	int mostInliers = 0;  //!< of this image's recognitions
 	for (const auto& c : candidates)
 	{
 		VisualLandmarkModel* lm = m_database.find(c.id);
@@ -93,6 +94,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		lm->missesInARow = 0;
 		lm->lastSeen = view.time;
 		recognized.push_back(c.id);
+		mostInliers = std::max(mostInliers, m->NPoints);
 		// Recognized (no new landmark here), but measured too poorly to report.
 		if ((m_options.recognition_max_std_xy > 0 && m->stdPosition > m_options.recognition_max_std_xy) ||
 			(m_options.recognition_max_std_phi > 0 && m->stdHeading > m_options.recognition_max_std_phi))
@@ -114,9 +116,12 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	}
 	out.seconds.pose = since(t);
 
-	// Creation: unrecognized views taken along the robot's motion.
+	// Creation: views along the robot's motion where no landmark is
+	// recognized, or (creation_below_inliers) none is recognized well.
 	t = Clock::now();
-	if (!recognized.empty())
+	const bool wellRecognized = !recognized.empty() &&
+		(m_options.creation_below_inliers <= 0 || mostInliers >= m_options.creation_below_inliers);
+	if (wellRecognized)
 		m_views.clear();
 	else
 	{

@@ -27,6 +27,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "creation_min_baseline", creation_min_baseline, Range::positive());
 	creation_max_baseline =
 		readDouble(c, s, "creation_max_baseline", creation_max_baseline, Range::positive());
+	creation_below_inliers = readCount("creation_below_inliers", creation_below_inliers, 0, 100000);
 	creation_min_points = readCount("creation_min_points", creation_min_points, 6, 100000);
 	creation_max_points = readCount("creation_max_points", creation_max_points, 6, 100000);
 	creation_max_reprojection_px = readDouble(
@@ -92,6 +93,7 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_views", creation_views, 30, 10, "Images a new landmark is built from (>= 3)");
 	c.write(s, "creation_min_baseline", creation_min_baseline, 30, 10, "Robot travel between creation views [m]");
 	c.write(s, "creation_max_baseline", creation_max_baseline, 30, 10, "Views older than this travel are dropped [m]");
+	c.write(s, "creation_below_inliers", creation_below_inliers, 30, 10, "Also build landmarks while the best recognition has fewer inliers (0: only when none)");
 	c.write(s, "creation_min_points", creation_min_points, 30, 10, "Good 3-D points a landmark needs");
 	c.write(s, "creation_max_points", creation_max_points, 30, 10, "Points kept per landmark at most");
 	c.write(s, "creation_max_reprojection_px", creation_max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");

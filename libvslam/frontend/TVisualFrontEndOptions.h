@@ -31,6 +31,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double creation_min_baseline = 0.15;
 	/** A view older than this travel from the newest is dropped, m. */
 	double creation_max_baseline = 1.0;
+	/** Also build a landmark while the best recognition has fewer PnP
+	 * inliers than this (the landmarks in view are leaving it), so the new
+	 * landmark's frame is placed while the robot is still localized
+	 * (0: only when nothing is recognized, the paper's rule). */
+	int creation_below_inliers = 0;
 	int creation_min_points = 25;  //!< good 3-D points a landmark needs
 	int creation_max_points = 300;  //!< strongest points kept per landmark
 	double creation_max_reprojection_px = 2.0;  //!< per view, after refinement
