@@ -14,8 +14,6 @@ namespace
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-/** A landmark is expected in view when the robot is near where it was
- * built and looks the same way (odometry only: the front-end has no map). */
 /** A reason with its numbers replaced by "N", to count reasons. */
 std::string withoutNumbers(const std::string& text)
 {
@@ -46,6 +44,8 @@ TScaleRefinementSettings scaleSettings(const TVisualFrontEndOptions& o)
 	return s;
 }
 
+/** A landmark is expected in view when the robot is near where it was
+ * built and looks the same way (odometry only: the front-end has no map). */
 bool expectedInView(const mrpt::poses::CPose2D& createdAt, const mrpt::poses::CPose2D& now)
 {
 	constexpr double kNear = 0.5, kSameWay = 20 * M_PI / 180;
@@ -189,7 +189,7 @@ void CVisualFrontEnd::refineScale(VisualLandmarkModel& lm, VisualMeasurement& m,
 	ScaleSighting s;
 	s.cameraInLandmark = {cameraInLandmark.x(), cameraInLandmark.y()};
 	s.headingInLandmark = m.robotInLandmark.yaw();
-	s.stdPosition = m.stdPosition;
+	s.stdPosition = m.stdPosition;  // the solve's position std (of the landmark in the robot frame)
 	s.cameraInOdometry = {cameraInOdometry.x(), cameraInOdometry.y()};
 	s.headingInOdometry = odometryPose.phi();
 	s.travelled = m_travelled;

@@ -50,7 +50,7 @@ struct ScaleSighting
 	/** From the pose solve, in the landmark's current units. */
 	mrpt::math::TPoint2D cameraInLandmark;
 	double headingInLandmark = 0;  //!< rad
-	double stdPosition = 0;  //!< of cameraInLandmark, current units
+	double stdPosition = 0;  //!< the pose solve's predicted position std, current units
 	/** From odometry (the robot's odometry pose composed with the mount). */
 	mrpt::math::TPoint2D cameraInOdometry;
 	double headingInOdometry = 0;  //!< rad
