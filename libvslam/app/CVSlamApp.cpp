@@ -95,6 +95,7 @@ void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::strin
 	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);
 	filterOptions.loadFromConfig(params);
 	frontEndOptions.loadFromConfigFile(params, TVisualFrontEndOptions::kSection);
+	frontEndOptions.takeOdometryNoiseFrom(filterOptions.motion.sigma_T);
 }
 
 bool CVSlamApp::initialize(int argc, const char** argv)

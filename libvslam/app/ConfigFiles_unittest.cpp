@@ -5,6 +5,8 @@
 #include <libvslam/config/IniText.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/config/KeyValidation.h>
+#include <libvslam/config/Overrides.h>
+#include <libvslam/models/CMotionModel.h>
 #include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
 #include <libvslam/world/FloorPlanFile.h>
@@ -168,4 +170,24 @@ TEST(ConfigFiles, RenderedSimulatorIniFilesLoadAndTheExampleShowsTheDefaults)
 		checked++;
 	}
 	EXPECT_GE(checked, 6u);
+}
+
+TEST(ConfigFiles, TheScaleTracksOdometryNoiseIsTheMotionModelsUnlessSet)
+{
+	const fs::path dir = fs::temp_directory_path() / "vslam_scale_sigma_test";
+	fs::create_directories(dir);
+	const fs::path ini = dir / "run.ini";
+	std::ofstream(ini) << "[vslam_motion_model]\nsigma_T = 0.08\n";
+	// Both apps that run the front-end: vslam and (via loadFrontEndOptions) vslam-frontend.
+	CVSlamApp app;
+	const std::string file = ini.string();
+	const char* argv[] = {"vslam", file.c_str(), "unused.rawlog"};
+	ASSERT_TRUE(app.initialize(3, argv));
+	EXPECT_EQ(app.frontEndOptions.scale_odometry_sigma, 0.08);
+	EXPECT_EQ(loadFrontEndOptions(file, {}).scale_odometry_sigma, 0.08);
+	// Given explicitly, the front-end's own value stands.
+	const auto own = loadFrontEndOptions(file, {config::parseOverride("vslam_frontend.scale_odometry_sigma=0.03")});
+	EXPECT_EQ(own.scale_odometry_sigma, 0.03);
+	EXPECT_EQ(loadFrontEndOptions("", {}).scale_odometry_sigma, CMotionModel::TOptions().sigma_T);
+	fs::remove_all(dir);
 }

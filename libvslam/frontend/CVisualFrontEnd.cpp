@@ -1,5 +1,6 @@
 #include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
+#include <libvslam/models/CMotionModel.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
@@ -38,7 +39,8 @@ std::string withoutNumbers(const std::string& text)
 TScaleRefinementSettings scaleSettings(const TVisualFrontEndOptions& o)
 {
 	TScaleRefinementSettings s;
-	s.odometrySigma = o.scale_odometry_sigma;
+	// 0 left unresolved (options not read from an INI): the motion model's default.
+	s.odometrySigma = o.scale_odometry_sigma > 0 ? o.scale_odometry_sigma : CMotionModel::TOptions().sigma_T;
 	s.pairMinTravel = o.scale_pair_min_travel;
 	s.pairMaxTravel = o.scale_pair_max_travel;
 	return s;

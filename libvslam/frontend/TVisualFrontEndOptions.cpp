@@ -2,6 +2,7 @@
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/models/CMotionModel.h>
 
 #include <algorithm>
 #include <fstream>
@@ -10,6 +11,12 @@
 
 using namespace vslam;
 using namespace vslam::config;
+
+namespace
+{
+/** The motion model's section (TVSlamFilterOptions::kMotionModel). */
+constexpr const char* kMotionModelSection = "vslam_motion_model";
+}  // namespace
 
 void TVisualFrontEndOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
@@ -40,7 +47,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	creation_odometry_sigma_rel =
 		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range::positive());
 	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
-	scale_odometry_sigma = readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::positive());
+	scale_odometry_sigma =
+		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::nonNegative());
 	scale_pair_min_travel =
 		readDouble(c, s, "scale_pair_min_travel", scale_pair_min_travel, Range::positive());
 	scale_pair_max_travel =
@@ -83,6 +91,11 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		throw ConfigError("[" + s + "] fx and fy must be given together");
 }
 
+void TVisualFrontEndOptions::takeOdometryNoiseFrom(double motionModelSigmaT)
+{
+	if (scale_odometry_sigma == 0) scale_odometry_sigma = motionModelSigmaT;
+}
+
 void TVisualFrontEndOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
@@ -102,7 +115,7 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
 	c.write(s, "scale_refinement", scale_refinement, 30, 10, "Refine landmark scales from later sightings and odometry");
-	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (the motion model's sigma_T)");
+	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (0: [vslam_motion_model] sigma_T)");
 	c.write(s, "scale_pair_min_travel", scale_pair_min_travel, 30, 10, "Travel between paired sightings, at least [m]");
 	c.write(s, "scale_pair_max_travel", scale_pair_max_travel, 30, 10, "Travel between paired sightings, at most [m]");
 	c.write(s, "recognition_min_votes", recognition_min_votes, 30, 10, "Feature votes that make a landmark a candidate");
@@ -140,6 +153,9 @@ TVisualFrontEndOptions vslam::loadFrontEndOptions(
 		known.addFromOptions(options, TVisualFrontEndOptions::kSection);
 		config::checkNoUnknownKeys(cfg, known, TVisualFrontEndOptions::kSection);
 		options.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
+		CMotionModel::TOptions motion;
+		motion.loadFromConfigFile(cfg, kMotionModelSection);
+		options.takeOdometryNoiseFrom(motion.sigma_T);
 	}
 	catch (const ConfigError& e)
 	{

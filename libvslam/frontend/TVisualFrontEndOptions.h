@@ -51,9 +51,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	/** Refine each landmark's scale from its later sightings against the
 	 * odometry between them (LandmarkScaleTrack.h). */
 	bool scale_refinement = true;
-	/** The odometry's translation noise, m/sqrt(m) travelled (the motion
-	 * model's sigma_T). */
-	double scale_odometry_sigma = 0.05;
+	/** The odometry's translation noise, m/sqrt(m) travelled; 0: the
+	 * motion model's sigma_T ([vslam_motion_model] of the same INI), so
+	 * the two cannot disagree by oversight. */
+	double scale_odometry_sigma = 0;
 	double scale_pair_min_travel = 0.3;  //!< m of travel between paired sightings, at least
 	double scale_pair_max_travel = 2.0;  //!< ... and at most
 
@@ -96,13 +97,16 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+	/** Sets scale_odometry_sigma to the motion model's sigma_T if it is 0. */
+	void takeOdometryNoiseFrom(double motionModelSigmaT);
 	void saveToConfigFile(
 		mrpt::config::CConfigFileBase& target, const std::string& section) const override;
 };
 
 /** The [vslam_frontend] options of an INI file ("" for none) with `--set`
  * overrides, strictly (unknown keys and bad values are ConfigError naming
- * the file). Used by the apps that run the front-end alone. */
+ * the file), with the odometry noise of its [vslam_motion_model] where
+ * scale_odometry_sigma is 0. Used by the apps that run the front-end alone. */
 TVisualFrontEndOptions loadFrontEndOptions(
 	const std::string& iniFile, const std::vector<config::Override>& overrides);
 }  // namespace vslam
