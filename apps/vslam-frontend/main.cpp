@@ -83,24 +83,23 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, const std::string& groundTruthFile)
 {
 	using namespace vslam;
-	constexpr double kMaxGap = 1.0;  // s between ground-truth samples, as in MeasurementAccuracy
 	const Trajectory truth = readTrajectory(groundTruthFile);
-	std::map<int64_t, se2::Pose> frameOf;
+	std::map<int64_t, double> createdAt;
 	for (auto& [action, sf] : steps)
 	{
 		std::vector<mrpt::obs::CObservation::Ptr> kept;
 		for (const auto& o : *sf)
 		{
 			if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
-				if (const auto frame = interpolate(truth, mrpt::Clock::toDouble(c->timestamp), kMaxGap))
-					frameOf[c->landmarkID] = *frame;
+				createdAt[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
 			if (auto* m = dynamic_cast<CObservationVisualLandmark*>(o.get()))
 			{
-				const auto frame = frameOf.find(m->landmarkID);
-				const auto now = interpolate(truth, mrpt::Clock::toDouble(m->timestamp), kMaxGap);
-				if (frame == frameOf.end() || !now) continue;
-				const se2::Pose z = se2::between(*now, frame->second);
-				m->relPose = mrpt::poses::CPose2D(z.x, z.y, z.phi);
+				const auto created = createdAt.find(m->landmarkID);
+				const auto z = created == createdAt.end()
+					? std::nullopt
+					: trueLandmarkMeasurement(truth, mrpt::Clock::toDouble(m->timestamp), created->second);
+				if (!z) continue;
+				m->relPose = mrpt::poses::CPose2D(z->x, z->y, z->phi);
 			}
 			kept.push_back(o);
 		}

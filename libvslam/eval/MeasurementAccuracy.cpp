@@ -29,11 +29,19 @@ struct ErrorList
 };
 }  // namespace
 
+std::optional<se2::Pose> trueLandmarkMeasurement(const Trajectory& truth, double t, double tCreated)
+{
+	constexpr double kMaxGap = 1.0;  // s between ground-truth samples
+	const auto now = interpolate(truth, t, kMaxGap);
+	const auto frame = interpolate(truth, tCreated, kMaxGap);
+	if (!now || !frame) return std::nullopt;
+	return se2::between(*now, *frame);
+}
+
 MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRecord>& measurements,
 	const std::map<int64_t, double>& creationTimes, const Trajectory& truth,
 	const CMeasurementExtractor::TVisualOptions& sigma, const CPreFilter::TOptions& prefilter)
 {
-	constexpr double kMaxGap = 1.0;  // s between ground-truth samples
 	const CPreFilter filter(prefilter);
 	MeasurementAccuracy out;
 	ErrorList all, accepted;
@@ -41,19 +49,14 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 	{
 		out.measurements++;
 		const auto created = creationTimes.find(m.landmarkID);
-		const auto now = interpolate(truth, m.t, kMaxGap);
-		if (created == creationTimes.end() || !now)
+		const auto truthOfIt =
+			created == creationTimes.end() ? std::nullopt : trueLandmarkMeasurement(truth, m.t, created->second);
+		if (!truthOfIt)
 		{
 			out.withoutTruth++;
 			continue;
 		}
-		const auto frame = interpolate(truth, created->second, kMaxGap);
-		if (!frame)
-		{
-			out.withoutTruth++;
-			continue;
-		}
-		const se2::Pose expected = se2::between(*now, *frame);
+		const se2::Pose expected = *truthOfIt;
 		const Eigen::Vector3d e = se2::difference(m.z, expected);
 		const bool beyond = std::abs(e[0]) > 3 * sigma.std_dx || std::abs(e[1]) > 3 * sigma.std_dy ||
 			std::abs(e[2]) > 3 * sigma.std_dphi;

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace vslam
@@ -53,6 +54,12 @@ struct MeasurementAccuracy
 	MeasurementErrorStats all, accepted;
 	std::vector<MeasurementError> errors;  //!< those with truth, in input order
 };
+
+/** The true measurement at time t of a landmark created at tCreated: the
+ * robot's true pose at creation (the landmark frame) seen from its true
+ * pose at t. nullopt where the truth has no pose (outside it, or across a
+ * gap over 1 s). */
+std::optional<se2::Pose> trueLandmarkMeasurement(const Trajectory& truth, double t, double tCreated);
 
 MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRecord>& measurements,
 	const std::map<int64_t, double>& creationTimes, const Trajectory& truth,

@@ -86,7 +86,7 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 struct TVSlamFilterOptions
 {
 	static constexpr const char* kParticleFilter = "vslam_particle_filter";
-	static constexpr const char* kMotionModel = "vslam_motion_model";
+	static constexpr const char* kMotionModel = CMotionModel::TOptions::kSection;
 	static constexpr const char* kLikelihood = "vslam_likelihood";
 	static constexpr const char* kMixture = "vslam_mixture_proposal";
 	static constexpr const char* kKidnap = "vslam_kidnap";

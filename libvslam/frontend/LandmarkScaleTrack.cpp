@@ -26,9 +26,10 @@ double LandmarkScaleTrack::addSighting(const ScaleSighting& s)
 {
 	if (!std::isfinite(s.stdPosition)) return 1;  // a degenerate solve measures nothing
 	// Back to the units the landmark was built in.
+	const double applied = appliedFactor();
 	ScaleSighting now = s;
-	now.cameraInLandmark = s.cameraInLandmark * (1 / m_applied);
-	now.stdPosition = s.stdPosition / m_applied;
+	now.cameraInLandmark = s.cameraInLandmark * (1 / applied);
+	now.stdPosition = s.stdPosition / applied;
 	if (!m_anchor)
 	{
 		m_anchor = now;
@@ -73,8 +74,5 @@ double LandmarkScaleTrack::addSighting(const ScaleSighting& s)
 	m_used++;
 	m_information = information;
 	m_weightedSum = weightedSum;
-	const double applied = 1 / scaleError();
-	const double factor = applied / m_applied;
-	m_applied = applied;
-	return factor;
+	return appliedFactor() / applied;
 }

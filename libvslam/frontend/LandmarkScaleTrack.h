@@ -75,7 +75,7 @@ class LandmarkScaleTrack
 	double scaleError() const { return m_weightedSum / m_information; }
 	double scaleErrorStd() const;
 	/** The factor the landmark's lengths carry now, relative to creation. */
-	double appliedFactor() const { return m_applied; }
+	double appliedFactor() const { return 1 / scaleError(); }
 	int pairsUsed() const { return m_used; }
 	int pairsRejected() const { return m_rejected; }
 
@@ -84,7 +84,6 @@ class LandmarkScaleTrack
 	/** The previous sighting, positions in the units as built. */
 	std::optional<ScaleSighting> m_anchor;
 	double m_information = 1, m_weightedSum = 1;  //!< the prior k = 1
-	double m_applied = 1;  //!< = 1 / scaleError() after the last update
 	int m_used = 0, m_rejected = 0;
 };
 }  // namespace vslam

@@ -12,12 +12,6 @@
 using namespace vslam;
 using namespace vslam::config;
 
-namespace
-{
-/** The motion model's section (TVSlamFilterOptions::kMotionModel). */
-constexpr const char* kMotionModelSection = "vslam_motion_model";
-}  // namespace
-
 void TVisualFrontEndOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
@@ -154,7 +148,7 @@ TVisualFrontEndOptions vslam::loadFrontEndOptions(
 		config::checkNoUnknownKeys(cfg, known, TVisualFrontEndOptions::kSection);
 		options.loadFromConfigFile(cfg, TVisualFrontEndOptions::kSection);
 		CMotionModel::TOptions motion;
-		motion.loadFromConfigFile(cfg, kMotionModelSection);
+		motion.loadFromConfigFile(cfg, CMotionModel::TOptions::kSection);
 		options.takeOdometryNoiseFrom(motion.sigma_T);
 	}
 	catch (const ConfigError& e)

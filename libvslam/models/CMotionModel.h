@@ -34,6 +34,7 @@ class CMotionModel
    public:
 	struct TOptions : public mrpt::config::CLoadableOptions
 	{
+		static constexpr const char* kSection = "vslam_motion_model";
 		/** Translational noise, m per sqrt(m) travelled. */
 		double sigma_T = 0.05;
 		/** Rotational noise, rad per sqrt(rad) turned. */
