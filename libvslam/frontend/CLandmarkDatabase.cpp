@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <unordered_map>
 
 using namespace vslam;
 
@@ -19,24 +18,10 @@ CLandmarkDatabase::~CLandmarkDatabase() = default;
 
 void CLandmarkDatabase::rebuildIndex()
 {
-	m_store = Store();
-	m_store.bytes = m_searchCodec.kind() == DescriptorCodec::Kind::Projected;
-	for (const auto& [id, lm] : m_landmarks) addToStore(id, DescriptorCodec::decode(lm.descriptors));
-	m_removedRows = 0;
-	m_index = std::make_unique<Index>(m_searchCodec.dims(), m_store, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-}
-
-void CLandmarkDatabase::addToStore(int64_t id, const cv::Mat& descriptors)
-{
+	m_index = DescriptorIndex::create(m_options, m_searchCodec);
 	// The search codes are made from the descriptors as matched (so a
 	// rebuild from stored uint8 codes gives what insertion gave).
-	m_store.blocks.push_back(m_searchCodec.encode(descriptors));
-	const cv::Mat& block = m_store.blocks.back();
-	for (int r = 0; r < block.rows; r++)
-	{
-		m_store.rows.push_back(block.ptr(r));
-		m_store.owner.push_back(id);
-	}
+	for (const auto& [id, lm] : m_landmarks) m_index->add(id, DescriptorCodec::decode(lm.descriptors));
 }
 
 void CLandmarkDatabase::insert(VisualLandmarkModel lm)
@@ -47,26 +32,16 @@ void CLandmarkDatabase::insert(VisualLandmarkModel lm)
 	lm.descriptors = m_codec.encode(lm.descriptors);
 	const int64_t id = lm.id;
 	const auto& stored = m_landmarks.emplace(id, std::move(lm)).first->second;
-	if (stored.descriptors.rows == 0) return;
-	const size_t first = m_store.rows.size();
-	addToStore(id, DescriptorCodec::decode(stored.descriptors));
-	m_index->addPoints(static_cast<uint32_t>(first), static_cast<uint32_t>(m_store.rows.size() - 1));
+	m_index->add(id, DescriptorCodec::decode(stored.descriptors));
 }
 
 void CLandmarkDatabase::remove(int64_t id)
 {
 	const auto it = m_landmarks.find(id);
 	if (it == m_landmarks.end()) return;
-	// The index keeps reading removed rows until it is rebuilt, so the
-	// landmark's data lives on until then.
-	for (size_t i = 0; i < m_store.owner.size(); i++)
-		if (m_store.owner[i] == id)
-		{
-			m_index->removePoint(i);
-			m_removedRows++;
-		}
 	m_landmarks.erase(it);
-	if (m_removedRows * 2 > m_store.rows.size()) rebuildIndex();
+	m_index->remove(id);
+	if (m_index->removedRows() * 2 > m_index->rows()) rebuildIndex();
 }
 
 VisualLandmarkModel* CLandmarkDatabase::find(int64_t id)
@@ -87,20 +62,13 @@ std::vector<CLandmarkDatabase::Candidate> CLandmarkDatabase::candidates(const Im
 	if (m_landmarks.empty() || image.searchCodes.rows == 0) return out;
 	std::map<int64_t, int> votes;
 	const float ratio2 = static_cast<float>(m_options.match_ratio * m_options.match_ratio);
-	const nanoflann::SearchParams params(32, static_cast<float>(m_options.search_eps));
-	const cv::Mat& query = image.searchCodes;
-	for (int q = 0; q < query.rows; q++)
+	for (const NearestLandmarkRows& nearest : m_index->twoNearest(image.searchCodes))
 	{
-		uint32_t idx[2];
-		float dist[2];
-		nanoflann::KNNResultSet<float, uint32_t> result(2);
-		result.init(idx, dist);
-		m_index->findNeighbors(result, query.ptr<float>(q), params);
-		if (result.size() < 1) continue;
+		if (nearest.count < 1) continue;
 		// Second neighbour from another landmark is the meaningful rival.
-		if (result.size() == 2 && m_store.owner[idx[0]] != m_store.owner[idx[1]] && !(dist[0] < ratio2 * dist[1]))
+		if (nearest.count == 2 && nearest.owner[0] != nearest.owner[1] && !(nearest.dist[0] < ratio2 * nearest.dist[1]))
 			continue;
-		votes[m_store.owner[idx[0]]]++;
+		votes[nearest.owner[0]]++;
 	}
 	for (const auto& [id, n] : votes)
 		if (n >= m_options.recognition_min_votes) out.push_back({id, n});
@@ -116,11 +84,4 @@ size_t CLandmarkDatabase::landmarkBytes() const
 	return b;
 }
 
-size_t CLandmarkDatabase::indexBytes() const
-{
-	size_t b = m_store.rows.capacity() * sizeof(void*) + m_store.owner.capacity() * sizeof(int64_t);
-	for (const auto& block : m_store.blocks) b += block.total() * block.elemSize();
-	for (const auto& sub : m_index->getAllIndices())
-		b += sub.pool.usedMemory + sub.pool.wastedMemory + sub.vAcc.capacity() * sizeof(uint32_t);
-	return b;
-}
+size_t CLandmarkDatabase::indexBytes() const { return m_index->bytes(); }

@@ -61,7 +61,14 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
 	recognition_max_std_phi = readDegreesAsRadians(
 		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
+	{
+		static const std::vector<std::string> kinds{"kdtree", "flann"};
+		const size_t def = std::find(kinds.begin(), kinds.end(), search_index) - kinds.begin();
+		search_index = kinds[readChoice(c, s, "search_index", def, kinds)];
+	}
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
+	search_flann_trees = readCount("search_flann_trees", search_flann_trees, 1, 16);
+	search_checks = readCount("search_checks", search_checks, 1, 100000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
 	{
 		static const std::vector<std::string> kinds{"float", "uint8", "projected"};
@@ -123,7 +130,10 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Reject a measurement whose predicted position std exceeds this [m] (0: off)");
 	c.write(s, "recognition_max_std_phi_deg", recognition_max_std_phi * 180 / M_PI, 30, 10,
 		"Reject a measurement whose predicted heading std exceeds this [deg] (0: off)");
-	c.write(s, "search_eps", search_eps, 30, 10, "Approximate descriptor search (nanoflann eps; 0: exact)");
+	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks)");
+	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
+	c.write(s, "search_flann_trees", search_flann_trees, 30, 10, "flann: randomized k-d trees per index level");
+	c.write(s, "search_checks", search_checks, 30, 10, "flann: leaves checked per query and level");
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
 	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | projected (descriptor_dims B)");
 	c.write(s, "descriptor_dims", descriptor_dims, 30, 10, "Dimensions kept by the projected storage");

@@ -1,0 +1,75 @@
+#include <libvslam/frontend/DescriptorIndex.h>
+#include <libvslam/frontend/FlannDescriptorIndex.h>
+#include <libvslam/frontend/KdTreeDescriptorIndex.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+using namespace vslam;
+
+std::unique_ptr<DescriptorIndex> DescriptorIndex::create(
+	const TVisualFrontEndOptions& options, const DescriptorCodec& codec)
+{
+	if (options.search_index == "kdtree") return std::make_unique<KdTreeDescriptorIndex>(codec, options.search_eps);
+	if (options.search_index == "flann")
+		return std::make_unique<FlannDescriptorIndex>(codec, options.search_flann_trees, options.search_checks);
+	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (kdtree | flann)");
+}
+
+void DescriptorIndex::add(int64_t owner, const cv::Mat& siftDescriptors)
+{
+	if (siftDescriptors.rows == 0) return;
+	const size_t first = m_owner.size();
+	m_owner.insert(m_owner.end(), static_cast<size_t>(siftDescriptors.rows), owner);
+	m_removed.insert(m_removed.end(), static_cast<size_t>(siftDescriptors.rows), 0);
+	doAdd(first, siftDescriptors);
+}
+
+void DescriptorIndex::remove(int64_t owner)
+{
+	for (size_t i = 0; i < m_owner.size(); i++)
+		if (m_owner[i] == owner && !m_removed[i])
+		{
+			m_removed[i] = 1;
+			m_removedRows++;
+		}
+}
+
+std::vector<NearestLandmarkRows> DescriptorIndex::twoNearest(const cv::Mat& queries) const
+{
+	std::vector<TwoNearestLiveRows> found(static_cast<size_t>(queries.rows), TwoNearestLiveRows(m_removed));
+	if (queries.rows > 0 && rows() > m_removedRows) doSearch(queries, found);
+	std::vector<NearestLandmarkRows> out(found.size());
+	for (size_t q = 0; q < found.size(); q++)
+	{
+		out[q].count = static_cast<int>(found[q].count());
+		for (int i = 0; i < out[q].count; i++)
+		{
+			out[q].owner[i] = m_owner[found[q].row(i)];
+			out[q].dist[i] = found[q].dist(i);
+		}
+	}
+	return out;
+}
+
+size_t DescriptorIndex::bytes() const
+{
+	return m_owner.capacity() * sizeof(int64_t) + m_removed.capacity() + doBytes();
+}
+
+void DescriptorIndex::TwoNearestLiveRows::offer(size_t row, float dist)
+{
+	if (m_removed[row]) return;
+	if ((m_count > 0 && m_row[0] == row) || (m_count > 1 && m_row[1] == row)) return;  // offered again
+	if (m_count == 0 || dist < m_dist[0])
+	{
+		m_row[1] = m_row[0], m_dist[1] = m_dist[0];
+		m_row[0] = row, m_dist[0] = dist;
+	}
+	else if (m_count == 1 || dist < m_dist[1])
+		m_row[1] = row, m_dist[1] = dist;
+	else
+		return;
+	m_count = std::min<size_t>(m_count + 1, 2);
+}

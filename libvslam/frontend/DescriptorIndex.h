@@ -1,0 +1,94 @@
+#pragma once
+/** \file DescriptorIndex.h
+ * Approximate nearest-neighbour search over the landmark database's
+ * descriptors, in the search codec's space (DescriptorCodec.h). Every row
+ * belongs to one landmark; a query gets its two nearest rows of landmarks
+ * not removed. Removal is lazy: searches skip removed rows until the owner
+ * (CLandmarkDatabase) rebuilds the index, which it does once
+ * removedRows() passes half of rows().
+ *
+ * Back-ends (`[vslam_frontend] search_index`):
+ *  - kdtree (KdTreeDescriptorIndex.h): nanoflann, eps-approximate;
+ *  - flann (FlannDescriptorIndex.h): OpenCV FLANN randomized k-d trees
+ *    searched with a bounded number of leaf checks, so a query costs about
+ *    the same whatever the map's size.
+ * The public methods are non-virtual and keep the row bookkeeping; the
+ * back-ends implement the protected virtuals.
+ */
+#include <opencv2/core.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace vslam
+{
+class DescriptorCodec;
+struct TVisualFrontEndOptions;
+
+/** A query's nearest rows, nearest first; dist are squared L2. */
+struct NearestLandmarkRows
+{
+	int count = 0;
+	int64_t owner[2] = {0, 0};
+	float dist[2] = {0, 0};
+};
+
+class DescriptorIndex
+{
+   public:
+	virtual ~DescriptorIndex() = default;
+
+	/** The back-end `options.search_index` names, over codes of `codec`
+	 * (which must outlive the index). */
+	static std::unique_ptr<DescriptorIndex> create(
+		const TVisualFrontEndOptions& options, const DescriptorCodec& codec);
+
+	/** Adds a landmark's descriptors (N x 128 SIFT, CV_32F) as N rows. */
+	void add(int64_t owner, const cv::Mat& siftDescriptors);
+	/** Every row of `owner` is skipped from now on. */
+	void remove(int64_t owner);
+	/** For each row of `queries` (the codec's matching space, CV_32F). */
+	std::vector<NearestLandmarkRows> twoNearest(const cv::Mat& queries) const;
+
+	size_t rows() const { return m_owner.size(); }
+	size_t removedRows() const { return m_removedRows; }
+	/** Memory held: codes, bookkeeping and the search structure. */
+	size_t bytes() const;
+
+   protected:
+	/** The two nearest live rows seen so far, offered by the back-end
+	 * (removed rows and rows offered again are ignored). */
+	class TwoNearestLiveRows
+	{
+	   public:
+		explicit TwoNearestLiveRows(const std::vector<char>& removed) : m_removed(removed) {}
+		void offer(size_t row, float dist);
+		size_t count() const { return m_count; }
+		size_t row(int i) const { return m_row[i]; }
+		float dist(int i) const { return m_dist[i]; }
+		float worstDist() const { return m_count == 2 ? m_dist[1] : std::numeric_limits<float>::max(); }
+
+	   private:
+		const std::vector<char>& m_removed;
+		size_t m_count = 0;
+		size_t m_row[2] = {0, 0};
+		float m_dist[2] = {0, 0};
+	};
+
+	/** Rows firstRow.. of `siftDescriptors` (one each) were appended. */
+	virtual void doAdd(size_t firstRow, const cv::Mat& siftDescriptors) = 0;
+	/** Fills one TwoNearestLiveRows per query (constructed with removed()). */
+	virtual void doSearch(const cv::Mat& queries, std::vector<TwoNearestLiveRows>& out) const = 0;
+	virtual size_t doBytes() const = 0;
+
+	const std::vector<char>& removed() const { return m_removed; }
+	bool anyRemoved() const { return m_removedRows > 0; }
+
+   private:
+	std::vector<int64_t> m_owner;  //!< landmark of each row
+	std::vector<char> m_removed;  //!< the row's landmark was removed
+	size_t m_removedRows = 0;
+};
+}  // namespace vslam

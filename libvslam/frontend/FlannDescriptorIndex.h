@@ -1,0 +1,50 @@
+#pragma once
+/** \file FlannDescriptorIndex.h
+ * DescriptorIndex on OpenCV FLANN randomized k-d trees (Muja and Lowe),
+ * searched with a bounded number of leaf checks per query, so a query's
+ * cost grows with the logarithm of the map, not with the map.
+ *
+ * FLANN's trees are static, so insertion follows the logarithmic method:
+ * the rows live in levels, each a FLANN index over a contiguous block of
+ * codes; a new landmark is a new level, and while a level is not much
+ * larger than the one after it the two merge (one rebuild). Each row is
+ * rebuilt O(log n) times over the map's life and a search visits O(log n)
+ * levels, each with the same check budget.
+ *
+ * FLANN draws its random split choices from cv::theRNG(): every build runs
+ * on a fixed seed and restores the caller's generator, so results are the
+ * same on every run and nothing else's random stream changes.
+ */
+#include <libvslam/frontend/DescriptorCodec.h>
+#include <libvslam/frontend/DescriptorIndex.h>
+#include <opencv2/flann.hpp>
+
+namespace vslam
+{
+class FlannDescriptorIndex : public DescriptorIndex
+{
+   public:
+	FlannDescriptorIndex(const DescriptorCodec& codec, int trees, int checks);
+	~FlannDescriptorIndex() override;
+	size_t levels() const { return m_levels.size(); }
+
+   protected:
+	void doAdd(size_t firstRow, const cv::Mat& siftDescriptors) override;
+	void doSearch(const cv::Mat& queries, std::vector<TwoNearestLiveRows>& out) const override;
+	size_t doBytes() const override;
+
+   private:
+	struct Level
+	{
+		cv::Mat codes;  //!< CV_32F, one row per descriptor (the index reads it)
+		size_t firstRow = 0;  //!< levels hold consecutive rows
+		std::unique_ptr<cv::flann::Index> index;
+	};
+	void build(Level& level) const;
+
+	const DescriptorCodec& m_codec;
+	int m_trees;
+	int m_checks;
+	std::vector<Level> m_levels;  //!< oldest (largest) first
+};
+}  // namespace vslam
