@@ -69,6 +69,8 @@ struct Scenario
 	int checks;  // flann
 };
 
+void PrintTo(const Scenario& s, std::ostream* os) { *os << s.index << " eps " << s.eps << " checks " << s.checks; }
+
 class DescriptorIndexScenario : public ::testing::TestWithParam<Scenario>
 {
    protected:

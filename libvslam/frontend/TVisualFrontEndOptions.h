@@ -77,12 +77,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	/** The descriptor index (DescriptorIndex.h): "kdtree" (nanoflann,
 	 * eps-approximate) or "flann" (OpenCV FLANN randomized k-d trees,
 	 * bounded checks: cost per query nearly independent of the map size). */
-	std::string search_index = "kdtree";
+	std::string search_index = "flann";
 	/** kdtree: nanoflann's eps (0: exact). */
 	double search_eps = 2.0;
 	/** flann: randomized trees per level, and leaves checked per query and level. */
-	int search_flann_trees = 4;
-	int search_checks = 64;
+	int search_flann_trees = 1;
+	int search_checks = 32;
 	/** The k-d tree votes in a random projection of the descriptors to this
 	 * many dimensions (signed bytes; 128: no projection). Candidates are
 	 * then verified with the stored descriptors. */
