@@ -126,7 +126,10 @@ TEST_P(ExactDescriptorIndex, GivesTheBruteForceNeighbours)
 
 /** The default approximation: a noisy copy of a stored row finds that
  * row's landmark almost always (voting tolerates the rest), and never a
- * removed landmark. */
+ * removed landmark. These uniform random descriptors are harder than real
+ * SIFT (all 16 projected dimensions independent): with noise 12 per value
+ * the k-d tree finds 100% and FLANN 96%; with noise 20, 98% and 76%
+ * (benchmarks.md). */
 TEST_P(DefaultDescriptorIndex, RecallsTheRightLandmarkAndSkipsRemovedOnes)
 {
 	std::mt19937 rng(11);
@@ -142,7 +145,7 @@ TEST_P(DefaultDescriptorIndex, RecallsTheRightLandmarkAndSkipsRemovedOnes)
 	int right = 0, total = 0;
 	for (int64_t id = 1; id <= 300; id += 7)
 	{
-		const auto found = index->twoNearest(codec.toMatchingSpace(withNoise(rng, sift[id], 4)));
+		const auto found = index->twoNearest(codec.toMatchingSpace(withNoise(rng, sift[id], 12)));
 		for (const auto& f : found)
 		{
 			ASSERT_GE(f.count, 1);
