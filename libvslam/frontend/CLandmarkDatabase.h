@@ -63,8 +63,6 @@ class CLandmarkDatabase
 	size_t landmarkBytes() const;
 	size_t indexBytes() const;
 
-	const DescriptorIndex& index() const { return *m_index; }
-
    private:
 	/** A new index over the live landmarks (after many removals). */
 	void rebuildIndex();

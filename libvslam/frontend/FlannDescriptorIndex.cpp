@@ -12,8 +12,9 @@ constexpr uint64_t kFlannSeed = 0x5eed;
 constexpr int kNeighbours = 2;
 constexpr int kSpareForRemoved = 2;
 /** A level merges into the one before while that one holds at most this
- * many times its rows: levels shrink by a factor above kMergeRatio + 1, so
- * a map of L landmarks has about log_{kMergeRatio + 1}(L) of them. Each
+ * many times its rows: each level then holds more than kMergeRatio times
+ * the next, so a map of L landmarks has at most about log_kMergeRatio(L)
+ * of them. Each
  * level costs a search its own per-query overhead, which dominates with
  * few checks, so fewer, larger levels search faster, for rebuilds of
  * O(kMergeRatio) times each row. */
