@@ -69,8 +69,12 @@ void FlannDescriptorIndex::doSearch(const cv::Mat& queries, std::vector<TwoNeare
 		int k = std::min(level.codes.rows, kNeighbours + (anyRemoved() ? kSpareForRemoved : 0));
 		while (!pending.empty())
 		{
-			cv::Mat asked(static_cast<int>(pending.size()), queries.cols, CV_32F), indices, dists;
-			for (size_t i = 0; i < pending.size(); i++) queries.row(pending[i]).copyTo(asked.row(static_cast<int>(i)));
+			cv::Mat asked = queries, indices, dists;
+			if (pending.size() < static_cast<size_t>(queries.rows))  // a retry: only those queries
+			{
+				asked.create(static_cast<int>(pending.size()), queries.cols, CV_32F);
+				for (size_t i = 0; i < pending.size(); i++) queries.row(pending[i]).copyTo(asked.row(static_cast<int>(i)));
+			}
 			level.index->knnSearch(asked, indices, dists, k, params);
 			std::vector<int> again;
 			for (size_t i = 0; i < pending.size(); i++)

@@ -17,9 +17,9 @@ class ResultSet
 	size_t size() const { return m_nearest.count(); }
 	bool full() const { return m_nearest.count() == 2; }
 	float worstDist() const { return m_nearest.worstDist(); }
-	bool addPoint(float dist, uint32_t local)
+	bool addPoint(float dist, uint32_t row)
 	{
-		m_nearest.offer(local, dist);
+		m_nearest.offer(row, dist);
 		return true;
 	}
 
