@@ -381,8 +381,9 @@ int CVSlamApp::run()
 	// Final outputs: also after an error or an interruption.
 	const auto& best = filter.particle(filter.bestParticleIndex());
 	writeLandmarkMap(out("final_map.txt"), filter.landmarkIndex(), best.bank);
+	Trajectory smoothed;
 	{
-		Trajectory path;
+		Trajectory& path = smoothed;
 		FILE* f = std::fopen(out("most_likely_path.txt").c_str(), "wt");
 		for (const auto& e : best.path.toVector())
 		{
@@ -397,6 +398,11 @@ int CVSlamApp::run()
 		summary.ate = computeAte(estimated, groundTruth);
 		summary.ateAligned = computeAte(estimated, groundTruth, {0.5, true});
 		summary.odometryAte = computeAte(odometry, groundTruth);
+		if (!smoothed.empty())
+		{
+			summary.smoothedAte = computeAte(smoothed, groundTruth);
+			summary.smoothedAteAligned = computeAte(smoothed, groundTruth, {0.5, true});
+		}
 	}
 	summary.peakMemoryMiB = peakMemoryMiB();
 	summary.write(out("run_summary.yaml"), filter);

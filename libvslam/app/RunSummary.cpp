@@ -137,6 +137,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 		o << "error_vs_ground_truth_m:\n";
 		writeAte(o, "vslam", ate);
 		writeAte(o, "vslam_se2_aligned", ateAligned);
+		writeAte(o, "most_likely_path", smoothedAte);
+		writeAte(o, "most_likely_path_se2_aligned", smoothedAteAligned);
 		writeAte(o, "dead_reckoning", odometryAte);
 	}
 	FILE* out = std::fopen(file.c_str(), "wt");

@@ -23,6 +23,9 @@ struct RunSummary
 	double peakMemoryMiB = 0;
 	double realTimeSpan = 0;  //!< seconds of data processed (timestamps; 0: unknown)
 	std::optional<AteStats> ate, ateAligned, odometryAte;
+	/** The best particle's whole path at the end (most_likely_path.tum):
+	 * the path smoothed by resampling, raw and SE(2)-aligned. */
+	std::optional<AteStats> smoothedAte, smoothedAteAligned;
 
 	/** The visual front-end, when the rawlog had camera images. */
 	struct FrontEnd

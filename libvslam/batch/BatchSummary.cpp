@@ -58,10 +58,10 @@ std::string writeBatchSummary(const BatchPlan& plan)
 {
 	std::ostringstream md;
 	md << "| scenario | variation | runs | ATE RMSE [m] | ATE RMSE aligned [m] | ATE median [m] | ATE mean [m] | "
-		  "RPE 1 s [m] | odometry ATE RMSE [m] | odometry ATE median [m] | odometry RPE 1 s [m] | kidnaps recovered within 10 s (to 0.3 m; to "
+		  "most-likely path ATE RMSE / aligned [m] | RPE 1 s [m] | odometry ATE RMSE [m] | odometry ATE median [m] | odometry RPE 1 s [m] | kidnaps recovered within 10 s (to 0.3 m; to "
 		  "the error level before) | "
 		  "wall time [s] | x real time | peak memory [MiB] |\n"
-	   << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+	   << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 	std::ofstream csv(plan.outputDir + "/summary.csv");
 	if (!csv) throw InputError("cannot write '" + plan.outputDir + "/summary.csv'");
 	std::set<std::string> keys;
@@ -107,7 +107,9 @@ std::string writeBatchSummary(const BatchPlan& plan)
 			md << "| " << s.name << " | " << v.label() << " | " << runs.size() << " / " << planned
 			   << " | " << cell(spreadOf(runs, "ate_rmse"), "%.3f") << " | "
 			   << cell(spreadOf(runs, "ate_aligned_rmse"), "%.3f") << " | " << cell(spreadOf(runs, "ate_median"), "%.3f")
-			   << " | " << cell(spreadOf(runs, "ate_mean"), "%.3f") << " | " << cell(spreadOf(runs, "rpe_1s_rmse"), "%.3f")
+			   << " | " << cell(spreadOf(runs, "ate_mean"), "%.3f") << " | "
+			   << cell(spreadOf(runs, "smoothed_ate_rmse"), "%.3f") << " / "
+			   << cell(spreadOf(runs, "smoothed_ate_aligned_rmse"), "%.3f") << " | " << cell(spreadOf(runs, "rpe_1s_rmse"), "%.3f")
 			   << " | " << cell(spreadOf(runs, "odometry_ate_rmse"), "%.3f") << " | "
 			   << cell(spreadOf(runs, "odometry_ate_median"), "%.3f") << " | "
 			   << cell(spreadOf(runs, "odometry_rpe_1s_rmse"), "%.3f") << " | " << kidnapCell << " | "

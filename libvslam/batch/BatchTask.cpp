@@ -43,7 +43,7 @@ double yamlNumber(const std::string& yaml, const std::string& key)
 
 /** Bumped whenever the metrics change: finished runs are then scored again
  * from their outputs (no rerun). */
-constexpr double kScoringVersion = 4;
+constexpr double kScoringVersion = 5;
 
 /** Median error over the minute before \a t (the run's error level). */
 double errorBefore(const AteStats& ate, double t)
@@ -72,6 +72,12 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	m["ate_max"] = ate.max;
 	m["ate_aligned_rmse"] = ateAligned.rmse;
 	m["heading_rmse_deg"] = ate.headingRmse * 180 / M_PI;
+	// The best particle's path at the end, smoothed by resampling.
+	const Trajectory smoothed = readTrajectory(out + "/most_likely_path.tum");
+	const AteStats smoothedAte = computeAte(smoothed, truth, raw);
+	m["smoothed_ate_rmse"] = smoothedAte.rmse;
+	m["smoothed_ate_median"] = smoothedAte.median;
+	m["smoothed_ate_aligned_rmse"] = computeAte(smoothed, truth, aligned).rmse;
 	const RpeStats rpe = computeRpe(estimate, truth);
 	m["rpe_1s_rmse"] = rpe.translation.rmse;
 	m["rpe_1s_rot_rmse_deg"] = rpe.rotation.rmse * 180 / M_PI;

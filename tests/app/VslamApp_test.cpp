@@ -83,6 +83,18 @@ TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
 	const AteStats ate = computeAte(est, readTrajectory(kDemoTruth));
 	EXPECT_EQ(ate.associated, 3000u);
 	EXPECT_NEAR(summaryRmse(dir.file("out/run_summary.yaml"), "vslam"), ate.rmse, 1e-3);
+	// The best particle's path at the end: one pose per camera frame, its
+	// error in the summary as recomputed here, raw and aligned.
+	const Trajectory smoothed = readTrajectory(dir.file("out/most_likely_path.tum"));
+	ASSERT_GT(smoothed.size(), 100u);
+	const AteStats smoothedAte = computeAte(smoothed, readTrajectory(kDemoTruth));
+	EXPECT_EQ(smoothedAte.associated, smoothed.size());
+	EXPECT_NEAR(summaryRmse(dir.file("out/run_summary.yaml"), "most_likely_path"), smoothedAte.rmse, 1e-3);
+	AteOptions aligned;
+	aligned.align = true;
+	const double smoothedAligned = computeAte(smoothed, readTrajectory(kDemoTruth), aligned).rmse;
+	EXPECT_NEAR(summaryRmse(dir.file("out/run_summary.yaml"), "most_likely_path_se2_aligned"), smoothedAligned, 1e-3);
+	EXPECT_LE(smoothedAligned, smoothedAte.rmse + 1e-9);
 	// Measured: 0.68 m RMSE (0.16 m median, the kidnap included), dead
 	// reckoning 2.58 m.
 	EXPECT_LT(ate.rmse, 0.5 * summaryRmse(dir.file("out/run_summary.yaml"), "dead_reckoning"));
