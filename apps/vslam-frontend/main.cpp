@@ -8,7 +8,7 @@
  * filter can be tested and timed separately.
  *
  *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]
- *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE]]
+ *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE [--oracle-kind K]]]
  *
  * With --ground-truth (TUM or rbpf-slam path of the robot, e.g. from
  * vslam-simul), it also prints how right the measurements are: errors of
@@ -20,7 +20,10 @@
  * recognitions, same statistics; measurements without truth dropped): fed
  * to vslam, it shows what the filter makes of a front-end with no
  * measurement error, which separates the front-end's share of a run's
- * error from the filter's.
+ * error from the filter's. --oracle-kind splits that share: `all` (the
+ * default) replaces every measurement, `outliers` only those beyond 3 sigma
+ * of Sigma_vis, `inliers` only those within, and `drop-outliers` keeps the
+ * measured values but removes those beyond 3 sigma.
  */
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
@@ -45,12 +48,10 @@
 namespace
 {
 void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
-	const std::map<int64_t, double>& creationTimes, const std::string& groundTruthFile, const std::string& iniFile,
-	const std::string& csvFile)
+	const std::map<int64_t, double>& creationTimes, const std::string& groundTruthFile,
+	const vslam::TVSlamFilterOptions& filter, const std::string& csvFile)
 {
 	using namespace vslam;
-	TVSlamFilterOptions filter;
-	if (!iniFile.empty()) filter.loadFromConfig(config::parseIniWithOverrides(config::readIniFile(iniFile), {}));
 	const auto a = evaluateMeasurements(
 		records, creationTimes, readTrajectory(groundTruthFile), filter.visual, filter.prefilter);
 	const auto row = [](const char* name, const MeasurementErrorStats& s) {
@@ -77,10 +78,29 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	std::fclose(f);
 }
 
-/** Replaces every landmark measurement in `steps` by its truth (the
- * landmark frame's true pose seen from the robot's true pose); those
- * without truth are dropped. */
-void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, const std::string& groundTruthFile)
+enum class OracleKind
+{
+	All,
+	Outliers,
+	Inliers,
+	DropOutliers
+};
+
+OracleKind parseOracleKind(const std::string& s)
+{
+	if (s == "all") return OracleKind::All;
+	if (s == "outliers") return OracleKind::Outliers;
+	if (s == "inliers") return OracleKind::Inliers;
+	if (s == "drop-outliers") return OracleKind::DropOutliers;
+	throw std::invalid_argument("--oracle-kind '" + s + "': expected all, outliers, inliers or drop-outliers");
+}
+
+/** Replaces the landmark measurements in `steps` that `kind` names by their
+ * truth (the landmark frame's true pose seen from the robot's true pose),
+ * or drops them (drop-outliers); those without truth are dropped. Outliers:
+ * beyond 3 sigma of `sigma` from the truth. */
+void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, const std::string& groundTruthFile,
+	OracleKind kind, const vslam::CMeasurementExtractor::TVisualOptions& sigma)
 {
 	using namespace vslam;
 	const Trajectory truth = readTrajectory(groundTruthFile);
@@ -99,7 +119,12 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 					? std::nullopt
 					: trueLandmarkMeasurement(truth, mrpt::Clock::toDouble(m->timestamp), created->second);
 				if (!z) continue;
-				m->relPose = mrpt::poses::CPose2D(z->x, z->y, z->phi);
+				const bool outlier =
+					beyondThreeSigma({m->relPose.x(), m->relPose.y(), m->relPose.phi()}, *z, sigma);
+				if (kind == OracleKind::DropOutliers && outlier) continue;
+				const bool replace = kind == OracleKind::All || (kind == OracleKind::Outliers && outlier) ||
+					(kind == OracleKind::Inliers && !outlier);
+				if (replace) m->relPose = mrpt::poses::CPose2D(z->x, z->y, z->phi);
 			}
 			kept.push_back(o);
 		}
@@ -110,7 +135,8 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 
 const char* kUsage =
 	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]\n"
-	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE]]\n"
+	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE]\n"
+	"                       [--oracle-rawlog FILE [--oracle-kind all|outliers|inliers|drop-outliers]]]\n"
 	"       vslam-frontend --print-default-config\n";
 }
 
@@ -122,6 +148,7 @@ int main(int argc, const char** argv)
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
 		std::string iniFile, groundTruthFile, csvFile, oracleFile;
+		OracleKind oracleKind = OracleKind::All;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
@@ -136,7 +163,7 @@ int main(int argc, const char** argv)
 				return 0;
 			}
 			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv" ||
-					a == "--oracle-rawlog") &&
+					a == "--oracle-rawlog" || a == "--oracle-kind") &&
 				i + 1 >= argc)
 				throw std::invalid_argument(a + " needs a value");
 			if (a == "--set")
@@ -149,6 +176,8 @@ int main(int argc, const char** argv)
 				csvFile = argv[++i];
 			else if (a == "--oracle-rawlog")
 				oracleFile = argv[++i];
+			else if (a == "--oracle-kind")
+				oracleKind = parseOracleKind(argv[++i]);
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "'");
 			else
@@ -207,10 +236,13 @@ int main(int argc, const char** argv)
 				  << total.created << " built";
 		for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
 		std::cout << "\n";
-		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, iniFile, csvFile);
+		// Sigma_vis and the pre-filter of the INI, for the accuracy figures.
+		TVSlamFilterOptions filter;
+		if (!iniFile.empty()) filter.loadFromConfig(config::parseIniWithOverrides(config::readIniFile(iniFile), {}));
+		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, filter, csvFile);
 		if (!oracleFile.empty())
 		{
-			replaceMeasurementsWithTruth(steps, groundTruthFile);
+			replaceMeasurementsWithTruth(steps, groundTruthFile, oracleKind, filter.visual);
 			writeActionFrameRawlog(oracleFile, steps);
 			std::cout << "vslam-frontend: the same with true measurements -> " << oracleFile << "\n";
 		}

@@ -38,6 +38,13 @@ std::optional<se2::Pose> trueLandmarkMeasurement(const Trajectory& truth, double
 	return se2::between(*now, *frame);
 }
 
+bool beyondThreeSigma(
+	const se2::Pose& z, const se2::Pose& truth, const CMeasurementExtractor::TVisualOptions& sigma)
+{
+	const Eigen::Vector3d e = se2::difference(z, truth);
+	return std::abs(e[0]) > 3 * sigma.std_dx || std::abs(e[1]) > 3 * sigma.std_dy || std::abs(e[2]) > 3 * sigma.std_dphi;
+}
+
 MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRecord>& measurements,
 	const std::map<int64_t, double>& creationTimes, const Trajectory& truth,
 	const CMeasurementExtractor::TVisualOptions& sigma, const CPreFilter::TOptions& prefilter)
@@ -58,8 +65,7 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 		}
 		const se2::Pose expected = *truthOfIt;
 		const Eigen::Vector3d e = se2::difference(m.z, expected);
-		const bool beyond = std::abs(e[0]) > 3 * sigma.std_dx || std::abs(e[1]) > 3 * sigma.std_dy ||
-			std::abs(e[2]) > 3 * sigma.std_dphi;
+		const bool beyond = beyondThreeSigma(m.z, expected, sigma);
 		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope) == CPreFilter::Verdict::Accepted;
 		out.errors.push_back({m, expected, e, ok, beyond});
 		for (ErrorList* list : {&all, &accepted})

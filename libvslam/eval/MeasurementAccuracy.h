@@ -61,6 +61,10 @@ struct MeasurementAccuracy
  * gap over 1 s). */
 std::optional<se2::Pose> trueLandmarkMeasurement(const Trajectory& truth, double t, double tCreated);
 
+/** True if measurement z is more than 3 sigma of Sigma_vis from the truth
+ * in x, y or heading. */
+bool beyondThreeSigma(const se2::Pose& z, const se2::Pose& truth, const CMeasurementExtractor::TVisualOptions& sigma);
+
 MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRecord>& measurements,
 	const std::map<int64_t, double>& creationTimes, const Trajectory& truth,
 	const CMeasurementExtractor::TVisualOptions& sigma, const CPreFilter::TOptions& prefilter);

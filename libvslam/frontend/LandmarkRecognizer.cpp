@@ -1,5 +1,6 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
+#include <libvslam/frontend/PlanarPose.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/wrap2pi.h>
 
@@ -34,6 +35,42 @@ VisualMeasurement measurementFromPnP(const cv::Mat& rvec, const cv::Mat& tvec, c
 	m.Slope = std::acos(std::clamp(Rr(2, 2), -1.0, 1.0));
 	const mrpt::poses::CPose2D robotPlanar(m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw());
 	m.landmarkInRobot = mrpt::poses::CPose2D() - robotPlanar;
+	return m;
+}
+
+/** Sets the position and heading std of `m` from the covariance of its
+ * (dx, dy, dtheta). */
+void setPredictedStd(VisualMeasurement& m, const Eigen::Matrix3d& cov)
+{
+	m.stdPosition = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov.topLeftCorner<2, 2>())
+												 .eigenvalues()
+												 .maxCoeff()));
+	m.stdHeading = std::sqrt(std::max(0.0, cov(2, 2)));
+}
+
+/** The planar refinement of a 6-DOF measurement `m` (recognition_planar):
+ * its pose, inliers, RMS error and predicted uncertainty replace the
+ * 6-DOF ones; Slope stays the 6-DOF solve's. Empty if too few inliers. */
+std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const std::vector<int>& inliers,
+	const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Matx33d& K,
+	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& o)
+{
+	const se2::Pose initial{m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw()};
+	const PlanarPoseFit fit = refinePlanarPose(initial, inliers, object, pixels, mount, K, o.recognition_ransac_px);
+	const int n = static_cast<int>(fit.inliers.size());
+	if (n < o.recognition_min_inliers || n < o.recognition_min_inlier_ratio * static_cast<double>(m.matches))
+		return std::nullopt;
+	const se2::Pose& r = fit.robotInLandmark;
+	m.robotInLandmark = mrpt::poses::CPose3D(r.x, r.y, 0, r.phi, 0, 0);
+	m.landmarkInRobot = mrpt::poses::CPose2D() - mrpt::poses::CPose2D(r.x, r.y, r.phi);
+	m.NPoints = n;
+	m.ProjErrRMS = fit.rmsPx;
+	// The measurement is the inverse of r: carry the covariance through its
+	// Jacobian.
+	const double c = std::cos(r.phi), s = std::sin(r.phi);
+	Eigen::Matrix3d F;
+	F << -c, -s, s * r.x - c * r.y, s, -c, c * r.x + s * r.y, 0, 0, -1;
+	setPredictedStd(m, F * fit.covariance * F.transpose());
 	return m;
 }
 }  // namespace
@@ -71,16 +108,17 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	std::vector<cv::Point2f> projected;
 	cv::projectPoints(object, rvec, tvec, K, cv::noArray(), projected);
 	double sq = 0;
-	int n = 0;
+	std::vector<int> refinedInliers;
 	for (size_t i = 0; i < object.size(); i++)
 	{
 		const double e2 = std::pow(projected[i].x - pixels[i].x, 2) + std::pow(projected[i].y - pixels[i].y, 2);
 		if (e2 <= o.recognition_ransac_px * o.recognition_ransac_px)
 		{
 			sq += e2;
-			n++;
+			refinedInliers.push_back(static_cast<int>(i));
 		}
 	}
+	const int n = static_cast<int>(refinedInliers.size());
 	if (n < o.recognition_min_inliers || n < o.recognition_min_inlier_ratio * static_cast<double>(matches.size()))
 		return std::nullopt;
 
@@ -89,16 +127,13 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(sq / n);
 	m.matches = static_cast<int>(matches.size());
+	if (o.recognition_planar) return planarMeasurement(m, refinedInliers, object, pixels, image.camera.K(), mount, o);
 
 	// Predicted uncertainty: pose covariance sigma^2 (J^T J)^-1 of the
 	// inliers' reprojection (sigma: their RMS error, at least 0.5 px),
 	// carried to (dx, dy, dtheta) by a numerical Jacobian.
 	std::vector<cv::Point3f> inlierObject;
-	for (size_t i = 0; i < object.size(); i++)
-	{
-		const double e2 = std::pow(projected[i].x - pixels[i].x, 2) + std::pow(projected[i].y - pixels[i].y, 2);
-		if (e2 <= o.recognition_ransac_px * o.recognition_ransac_px) inlierObject.push_back(object[i]);
-	}
+	for (int i : refinedInliers) inlierObject.push_back(object[i]);
 	cv::Mat jacobian;
 	std::vector<cv::Point2f> unused;
 	cv::projectPoints(inlierObject, rvec, tvec, K, cv::noArray(), unused, jacobian);
@@ -130,10 +165,6 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 		F(1, k) = (a.y() - b.y()) / (2 * h);
 		F(2, k) = mrpt::math::wrapToPi(a.phi() - b.phi()) / (2 * h);
 	}
-	const Eigen::Matrix3d cov = F * poseCov * F.transpose();
-	m.stdPosition = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov.topLeftCorner<2, 2>())
-												 .eigenvalues()
-												 .maxCoeff()));
-	m.stdHeading = std::sqrt(std::max(0.0, cov(2, 2)));
+	setPredictedStd(m, F * poseCov * F.transpose());
 	return m;
 }

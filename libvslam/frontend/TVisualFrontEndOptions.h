@@ -68,6 +68,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double recognition_min_inlier_ratio = 0;
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
 	int recognition_ransac_iterations = 300;
+	/** Refine the PnP pose with the robot on the floor plane (x, y, theta in
+	 * the landmark frame, camera mount fixed) and count inliers of that pose;
+	 * false: the 6-DOF pose as solved. */
+	bool recognition_planar = false;
 	/** A recognition whose predicted measurement uncertainty (from the pose
 	 * solve's geometry, LandmarkRecognizer.h) exceeds these is dropped:
 	 * few points in a small part of the image measure the pose poorly,

@@ -200,3 +200,62 @@ TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements
 	EXPECT_EQ(noTruth.exitCode, 1) << noTruth.output;  // a usage error
 	EXPECT_NE(noTruth.output.find("--ground-truth"), std::string::npos) << noTruth.output;
 }
+
+TEST(VisualPipeline, OracleKindsReplaceOrDropOnlyTheMeasurementsBeyondOrWithinThreeSigma)
+{
+	vslam::registerObservationClasses();
+	TempDir dir;
+	const std::string rawlog = dir.file("room.rawlog");
+	vslam::testing::RoomRawlogOptions o;
+	o.laps = 1.5;
+	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
+	// A Sigma_vis small enough that the front-end's errors fall on both sides
+	// of 3 sigma (1.5 cm, 0.6 deg).
+	const std::string ini = dir.file("sigma.ini");
+	std::ofstream(ini) << "[vslam_visual]\nstd_dx = 0.005\nstd_dy = 0.005\nstd_dphi_deg = 0.2\n";
+	const std::string fe = quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")) +
+		" --config " + quoted(ini) + " --ground-truth " + quoted(truthFile);
+	for (const char* kind : {"outliers", "drop-outliers"})
+	{
+		const auto r = runCommand(fe + " --oracle-rawlog " + quoted(dir.file(kind)) + " --oracle-kind " + kind);
+		ASSERT_EQ(r.exitCode, 0) << r.output;
+	}
+	std::map<int64_t, double> createdAt, unused;
+	const auto measured = readMeasurements(dir.file("m.rawlog"), createdAt);
+	const auto fixed = readMeasurements(dir.file("outliers"), unused);
+	const auto dropped = readMeasurements(dir.file("drop-outliers"), unused);
+	ASSERT_EQ(fixed.size(), measured.size());
+	const auto truth = vslam::readTrajectory(truthFile);
+	size_t outliers = 0, kept = 0;
+	for (size_t i = 0; i < measured.size(); i++)
+	{
+		const auto now = vslam::interpolate(truth, measured[i].t, 1.0);
+		const auto frame = vslam::interpolate(truth, createdAt.at(measured[i].id), 1.0);
+		ASSERT_TRUE(now && frame);
+		const mrpt::poses::CPose2D expected =
+			mrpt::poses::CPose2D(frame->x, frame->y, frame->phi) - mrpt::poses::CPose2D(now->x, now->y, now->phi);
+		// Componentwise, as the accuracy figures count them.
+		const bool beyond = std::abs(measured[i].z.x() - expected.x()) > 0.015 ||
+			std::abs(measured[i].z.y() - expected.y()) > 0.015 ||
+			std::abs(mrpt::math::wrapToPi(measured[i].z.phi() - expected.phi())) > 0.6 * M_PI / 180;
+		outliers += beyond;
+		// Outliers become the truth, the others stay as measured.
+		const mrpt::poses::CPose2D want = beyond ? expected : measured[i].z;
+		EXPECT_NEAR((fixed[i].z - want).norm(), 0, 1e-4) << i;
+		EXPECT_NEAR(mrpt::math::wrapToPi(fixed[i].z.phi() - want.phi()), 0, 1e-4) << i;
+		// drop-outliers keeps the others in order, as measured.
+		if (beyond) continue;
+		ASSERT_LT(kept, dropped.size());
+		EXPECT_EQ(dropped[kept].t, measured[i].t);
+		EXPECT_NEAR((dropped[kept].z - measured[i].z).norm(), 0, 1e-9);
+		kept++;
+	}
+	EXPECT_EQ(kept, dropped.size());
+	EXPECT_GT(outliers, 0u);
+	EXPECT_LT(outliers, measured.size());
+
+	const auto bad = runCommand(fe + " --oracle-rawlog " + quoted(dir.file("x")) + " --oracle-kind some");
+	EXPECT_EQ(bad.exitCode, 1) << bad.output;
+	EXPECT_NE(bad.output.find("--oracle-kind 'some'"), std::string::npos) << bad.output;
+}

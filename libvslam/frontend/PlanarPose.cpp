@@ -1,0 +1,143 @@
+#include <libvslam/frontend/PlanarPose.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <limits>
+
+using namespace vslam;
+
+namespace
+{
+constexpr double kMinDepth = 1e-6;
+constexpr int kMaxRounds = 5;
+constexpr int kMaxIterations = 20;
+
+Eigen::Vector3d toEigen(const cv::Point3f& p) { return {p.x, p.y, p.z}; }
+
+/** Squared reprojection error of point i, or infinity behind the camera. */
+double squaredError(const se2::Pose& r, const cv::Point3f& point, const cv::Point2f& pixel,
+	const mrpt::poses::CPose3D& mount, const cv::Matx33d& K)
+{
+	Eigen::Vector2d projected;
+	if (!projectPlanar(r, toEigen(point), mount, K, projected)) return std::numeric_limits<double>::infinity();
+	return (projected - Eigen::Vector2d(pixel.x, pixel.y)).squaredNorm();
+}
+
+std::vector<int> inliersOf(const se2::Pose& r, const std::vector<cv::Point3f>& points,
+	const std::vector<cv::Point2f>& pixels, const mrpt::poses::CPose3D& mount, const cv::Matx33d& K,
+	double inlierPx)
+{
+	std::vector<int> in;
+	for (size_t i = 0; i < points.size(); i++)
+		if (squaredError(r, points[i], pixels[i], mount, K) <= inlierPx * inlierPx) in.push_back(static_cast<int>(i));
+	return in;
+}
+
+double cost(const se2::Pose& r, const std::vector<int>& use, const std::vector<cv::Point3f>& points,
+	const std::vector<cv::Point2f>& pixels, const mrpt::poses::CPose3D& mount, const cv::Matx33d& K)
+{
+	double c = 0;
+	for (int i : use) c += squaredError(r, points[i], pixels[i], mount, K);
+	return c;
+}
+
+/** Levenberg-Marquardt on the points `use`. */
+void levenbergMarquardt(se2::Pose& r, const std::vector<int>& use, const std::vector<cv::Point3f>& points,
+	const std::vector<cv::Point2f>& pixels, const mrpt::poses::CPose3D& mount, const cv::Matx33d& K)
+{
+	double lambda = 1e-3, current = cost(r, use, points, pixels, mount, K);
+	for (int it = 0; it < kMaxIterations; it++)
+	{
+		Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+		Eigen::Vector3d g = Eigen::Vector3d::Zero();
+		for (int i : use)
+		{
+			Eigen::Vector2d projected;
+			Eigen::Matrix<double, 2, 3> J;
+			if (!projectPlanar(r, toEigen(points[i]), mount, K, projected, &J)) continue;
+			const Eigen::Vector2d e = projected - Eigen::Vector2d(pixels[i].x, pixels[i].y);
+			H += J.transpose() * J;
+			g += J.transpose() * e;
+		}
+		bool improved = false;
+		while (lambda < 1e8)
+		{
+			Eigen::Matrix3d A = H;
+			A.diagonal() *= 1 + lambda;
+			const Eigen::Vector3d step = A.ldlt().solve(-g);
+			const se2::Pose candidate{r.x + step[0], r.y + step[1], se2::wrap(r.phi + step[2])};
+			const double c = cost(candidate, use, points, pixels, mount, K);
+			if (c < current)
+			{
+				const bool converged = current - c < 1e-10 * (1 + current);
+				r = candidate;
+				current = c;
+				lambda = std::max(1e-7, lambda / 10);
+				improved = !converged;
+				break;
+			}
+			lambda *= 10;
+		}
+		if (!improved) break;
+	}
+}
+}  // namespace
+
+bool vslam::projectPlanar(const se2::Pose& r, const Eigen::Vector3d& P, const mrpt::poses::CPose3D& mount,
+	const cv::Matx33d& K, Eigen::Vector2d& pixel, Eigen::Matrix<double, 2, 3>* J)
+{
+	const double c = std::cos(r.phi), s = std::sin(r.phi);
+	const Eigen::Vector3d d(P.x() - r.x, P.y() - r.y, P.z());
+	const Eigen::Vector3d Q(c * d.x() + s * d.y(), -s * d.x() + c * d.y(), d.z());  // in the robot frame
+	const auto Rm = mount.getRotationMatrix();
+	Eigen::Matrix3d RmT;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) RmT(i, j) = Rm(j, i);
+	const Eigen::Vector3d Pc = RmT * (Q - Eigen::Vector3d(mount.x(), mount.y(), mount.z()));
+	if (Pc.z() < kMinDepth) return false;
+	const double fx = K(0, 0), fy = K(1, 1), iz = 1 / Pc.z();
+	pixel = {fx * Pc.x() * iz + K(0, 2), fy * Pc.y() * iz + K(1, 2)};
+	if (J)
+	{
+		// dQ/dx = -R^T e_x, dQ/dy = -R^T e_y, dQ/dtheta = (Q_y, -Q_x, 0).
+		Eigen::Matrix3d dQ;
+		dQ << -c, -s, Q.y(), s, -c, -Q.x(), 0, 0, 0;
+		Eigen::Matrix<double, 2, 3> dPixel;
+		dPixel << fx * iz, 0, -fx * Pc.x() * iz * iz, 0, fy * iz, -fy * Pc.y() * iz * iz;
+		*J = dPixel * RmT * dQ;
+	}
+	return true;
+}
+
+PlanarPoseFit vslam::refinePlanarPose(const se2::Pose& initial, const std::vector<int>& initialInliers,
+	const std::vector<cv::Point3f>& points, const std::vector<cv::Point2f>& pixels,
+	const mrpt::poses::CPose3D& mount, const cv::Matx33d& K, double inlierPx)
+{
+	PlanarPoseFit fit;
+	fit.robotInLandmark = initial;
+	fit.inliers = initialInliers;
+	for (int round = 0; round < kMaxRounds && fit.inliers.size() >= 3; round++)
+	{
+		levenbergMarquardt(fit.robotInLandmark, fit.inliers, points, pixels, mount, K);
+		auto again = inliersOf(fit.robotInLandmark, points, pixels, mount, K, inlierPx);
+		const bool same = again == fit.inliers;
+		fit.inliers = std::move(again);
+		if (same) break;
+	}
+	if (fit.inliers.empty()) return fit;
+	fit.rmsPx = std::sqrt(cost(fit.robotInLandmark, fit.inliers, points, pixels, mount, K) / fit.inliers.size());
+	// The information of the final inliers at the final pose.
+	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+	for (int i : fit.inliers)
+	{
+		Eigen::Vector2d projected;
+		Eigen::Matrix<double, 2, 3> J;
+		if (projectPlanar(fit.robotInLandmark, toEigen(points[i]), mount, K, projected, &J)) H += J.transpose() * J;
+	}
+	const double sigma = std::max(0.5, fit.rmsPx);
+	Eigen::FullPivLU<Eigen::Matrix3d> lu(H);
+	fit.covariance = lu.isInvertible() ? Eigen::Matrix3d(sigma * sigma * lu.inverse())
+									   : Eigen::Matrix3d::Constant(std::numeric_limits<double>::infinity());
+	return fit;
+}
