@@ -55,13 +55,15 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Matx33d& K,
 	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& o)
 {
-	const se2::Pose initial{m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw()};
+	// From the 6-DOF solve, its height above the mount's included.
+	const PlanarCameraState initial{
+		{m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw()}, m.robotInLandmark.z()};
 	const PlanarPoseFit fit = refinePlanarPose(initial, inliers, object, pixels, mount, K, o.recognition_ransac_px);
 	const int n = static_cast<int>(fit.inliers.size());
 	if (n < o.recognition_min_inliers || n < o.recognition_min_inlier_ratio * static_cast<double>(m.matches))
 		return std::nullopt;
-	const se2::Pose& r = fit.robotInLandmark;
-	m.robotInLandmark = mrpt::poses::CPose3D(r.x, r.y, 0, r.phi, 0, 0);
+	const se2::Pose& r = fit.state.robot;
+	m.robotInLandmark = mrpt::poses::CPose3D(r.x, r.y, fit.state.height, r.phi, 0, 0);
 	m.landmarkInRobot = mrpt::poses::CPose2D() - mrpt::poses::CPose2D(r.x, r.y, r.phi);
 	m.NPoints = n;
 	m.ProjErrRMS = fit.rmsPx;

@@ -16,7 +16,7 @@ constexpr int kMaxIterations = 20;
 Eigen::Vector3d toEigen(const cv::Point3f& p) { return {p.x, p.y, p.z}; }
 
 /** Squared reprojection error of point i, or infinity behind the camera. */
-double squaredError(const se2::Pose& r, const cv::Point3f& point, const cv::Point2f& pixel,
+double squaredError(const PlanarCameraState& r, const cv::Point3f& point, const cv::Point2f& pixel,
 	const mrpt::poses::CPose3D& mount, const cv::Matx33d& K)
 {
 	Eigen::Vector2d projected;
@@ -24,7 +24,7 @@ double squaredError(const se2::Pose& r, const cv::Point3f& point, const cv::Poin
 	return (projected - Eigen::Vector2d(pixel.x, pixel.y)).squaredNorm();
 }
 
-std::vector<int> inliersOf(const se2::Pose& r, const std::vector<cv::Point3f>& points,
+std::vector<int> inliersOf(const PlanarCameraState& r, const std::vector<cv::Point3f>& points,
 	const std::vector<cv::Point2f>& pixels, const mrpt::poses::CPose3D& mount, const cv::Matx33d& K,
 	double inlierPx)
 {
@@ -34,7 +34,7 @@ std::vector<int> inliersOf(const se2::Pose& r, const std::vector<cv::Point3f>& p
 	return in;
 }
 
-double cost(const se2::Pose& r, const std::vector<int>& use, const std::vector<cv::Point3f>& points,
+double cost(const PlanarCameraState& r, const std::vector<int>& use, const std::vector<cv::Point3f>& points,
 	const std::vector<cv::Point2f>& pixels, const mrpt::poses::CPose3D& mount, const cv::Matx33d& K)
 {
 	double c = 0;
@@ -43,18 +43,18 @@ double cost(const se2::Pose& r, const std::vector<int>& use, const std::vector<c
 }
 
 /** Levenberg-Marquardt on the points `use`. */
-void levenbergMarquardt(se2::Pose& r, const std::vector<int>& use, const std::vector<cv::Point3f>& points,
+void levenbergMarquardt(PlanarCameraState& r, const std::vector<int>& use, const std::vector<cv::Point3f>& points,
 	const std::vector<cv::Point2f>& pixels, const mrpt::poses::CPose3D& mount, const cv::Matx33d& K)
 {
 	double lambda = 1e-3, current = cost(r, use, points, pixels, mount, K);
 	for (int it = 0; it < kMaxIterations; it++)
 	{
-		Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-		Eigen::Vector3d g = Eigen::Vector3d::Zero();
+		Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
+		Eigen::Vector4d g = Eigen::Vector4d::Zero();
 		for (int i : use)
 		{
 			Eigen::Vector2d projected;
-			Eigen::Matrix<double, 2, 3> J;
+			Eigen::Matrix<double, 2, 4> J;
 			if (!projectPlanar(r, toEigen(points[i]), mount, K, projected, &J)) continue;
 			const Eigen::Vector2d e = projected - Eigen::Vector2d(pixels[i].x, pixels[i].y);
 			H += J.transpose() * J;
@@ -63,10 +63,11 @@ void levenbergMarquardt(se2::Pose& r, const std::vector<int>& use, const std::ve
 		bool improved = false;
 		while (lambda < 1e8)
 		{
-			Eigen::Matrix3d A = H;
+			Eigen::Matrix4d A = H;
 			A.diagonal() *= 1 + lambda;
-			const Eigen::Vector3d step = A.ldlt().solve(-g);
-			const se2::Pose candidate{r.x + step[0], r.y + step[1], se2::wrap(r.phi + step[2])};
+			const Eigen::Vector4d step = A.ldlt().solve(-g);
+			const PlanarCameraState candidate{
+				{r.robot.x + step[0], r.robot.y + step[1], se2::wrap(r.robot.phi + step[2])}, r.height + step[3]};
 			const double c = cost(candidate, use, points, pixels, mount, K);
 			if (c < current)
 			{
@@ -84,12 +85,13 @@ void levenbergMarquardt(se2::Pose& r, const std::vector<int>& use, const std::ve
 }
 }  // namespace
 
-bool vslam::projectPlanar(const se2::Pose& r, const Eigen::Vector3d& P, const mrpt::poses::CPose3D& mount,
-	const cv::Matx33d& K, Eigen::Vector2d& pixel, Eigen::Matrix<double, 2, 3>* J)
+bool vslam::projectPlanar(const PlanarCameraState& s, const Eigen::Vector3d& P, const mrpt::poses::CPose3D& mount,
+	const cv::Matx33d& K, Eigen::Vector2d& pixel, Eigen::Matrix<double, 2, 4>* J)
 {
-	const double c = std::cos(r.phi), s = std::sin(r.phi);
-	const Eigen::Vector3d d(P.x() - r.x, P.y() - r.y, P.z());
-	const Eigen::Vector3d Q(c * d.x() + s * d.y(), -s * d.x() + c * d.y(), d.z());  // in the robot frame
+	const se2::Pose& r = s.robot;
+	const double c = std::cos(r.phi), sn = std::sin(r.phi);
+	const Eigen::Vector3d d(P.x() - r.x, P.y() - r.y, P.z() - s.height);
+	const Eigen::Vector3d Q(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y(), d.z());  // in the robot frame
 	const auto Rm = mount.getRotationMatrix();
 	Eigen::Matrix3d RmT;
 	for (int i = 0; i < 3; i++)
@@ -100,9 +102,10 @@ bool vslam::projectPlanar(const se2::Pose& r, const Eigen::Vector3d& P, const mr
 	pixel = {fx * Pc.x() * iz + K(0, 2), fy * Pc.y() * iz + K(1, 2)};
 	if (J)
 	{
-		// dQ/dx = -R^T e_x, dQ/dy = -R^T e_y, dQ/dtheta = (Q_y, -Q_x, 0).
-		Eigen::Matrix3d dQ;
-		dQ << -c, -s, Q.y(), s, -c, -Q.x(), 0, 0, 0;
+		// dQ/dx = -R^T e_x, dQ/dy = -R^T e_y, dQ/dtheta = (Q_y, -Q_x, 0),
+		// dQ/dheight = -e_z.
+		Eigen::Matrix<double, 3, 4> dQ;
+		dQ << -c, -sn, Q.y(), 0, sn, -c, -Q.x(), 0, 0, 0, 0, -1;
 		Eigen::Matrix<double, 2, 3> dPixel;
 		dPixel << fx * iz, 0, -fx * Pc.x() * iz * iz, 0, fy * iz, -fy * Pc.y() * iz * iz;
 		*J = dPixel * RmT * dQ;
@@ -110,34 +113,35 @@ bool vslam::projectPlanar(const se2::Pose& r, const Eigen::Vector3d& P, const mr
 	return true;
 }
 
-PlanarPoseFit vslam::refinePlanarPose(const se2::Pose& initial, const std::vector<int>& initialInliers,
+PlanarPoseFit vslam::refinePlanarPose(const PlanarCameraState& initial, const std::vector<int>& initialInliers,
 	const std::vector<cv::Point3f>& points, const std::vector<cv::Point2f>& pixels,
 	const mrpt::poses::CPose3D& mount, const cv::Matx33d& K, double inlierPx)
 {
 	PlanarPoseFit fit;
-	fit.robotInLandmark = initial;
+	fit.state = initial;
 	fit.inliers = initialInliers;
 	for (int round = 0; round < kMaxRounds && fit.inliers.size() >= 3; round++)
 	{
-		levenbergMarquardt(fit.robotInLandmark, fit.inliers, points, pixels, mount, K);
-		auto again = inliersOf(fit.robotInLandmark, points, pixels, mount, K, inlierPx);
+		levenbergMarquardt(fit.state, fit.inliers, points, pixels, mount, K);
+		auto again = inliersOf(fit.state, points, pixels, mount, K, inlierPx);
 		const bool same = again == fit.inliers;
 		fit.inliers = std::move(again);
 		if (same) break;
 	}
 	if (fit.inliers.empty()) return fit;
-	fit.rmsPx = std::sqrt(cost(fit.robotInLandmark, fit.inliers, points, pixels, mount, K) / fit.inliers.size());
+	fit.rmsPx = std::sqrt(cost(fit.state, fit.inliers, points, pixels, mount, K) / fit.inliers.size());
 	// The information of the final inliers at the final pose.
-	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+	Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
 	for (int i : fit.inliers)
 	{
 		Eigen::Vector2d projected;
-		Eigen::Matrix<double, 2, 3> J;
-		if (projectPlanar(fit.robotInLandmark, toEigen(points[i]), mount, K, projected, &J)) H += J.transpose() * J;
+		Eigen::Matrix<double, 2, 4> J;
+		if (projectPlanar(fit.state, toEigen(points[i]), mount, K, projected, &J)) H += J.transpose() * J;
 	}
 	const double sigma = std::max(0.5, fit.rmsPx);
-	Eigen::FullPivLU<Eigen::Matrix3d> lu(H);
-	fit.covariance = lu.isInvertible() ? Eigen::Matrix3d(sigma * sigma * lu.inverse())
-									   : Eigen::Matrix3d::Constant(std::numeric_limits<double>::infinity());
+	Eigen::FullPivLU<Eigen::Matrix4d> lu(H);
+	fit.covariance = lu.isInvertible()
+		? Eigen::Matrix3d((sigma * sigma * lu.inverse()).topLeftCorner<3, 3>())
+		: Eigen::Matrix3d::Constant(std::numeric_limits<double>::infinity());
 	return fit;
 }

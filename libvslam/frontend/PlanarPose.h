@@ -3,14 +3,18 @@
  * The camera pose relative to a landmark's 3-D points when the robot moves
  * on the floor plane: the robot's planar pose (x, y, theta) in the landmark
  * frame (itself a robot pose at creation, so on the same plane), with the
- * camera mount fixed. Three unknowns instead of PnP's six: a 6-DOF solve can
- * explain a few matches with a tilted camera that the robot cannot have (the
- * mirror solution of near-planar point sets seen from afar is one), the
- * planar model cannot.
+ * camera's tilt fixed by its mount. A 6-DOF solve can explain a few matches
+ * with a tilted camera that the robot cannot have; the planar model cannot.
  *
- * Levenberg-Marquardt on the pixel reprojection error of the given points, with the
- * analytic Jacobian of projectPlanar(). The pixels are undistorted (the
- * pinhole K alone maps camera rays to them).
+ * The height is left free: a landmark's points carry its scale error (the
+ * scale comes from an odometry baseline), and in a frame scaled by s the
+ * camera sits at s times its mount height. A fixed height would turn that
+ * into errors of (x, y, theta); a free one takes it up (height / mount
+ * height is the landmark's scale error, to first order).
+ *
+ * Levenberg-Marquardt on the pixel reprojection error of the given points,
+ * with the analytic Jacobian of projectPlanar(). The pixels are undistorted
+ * (the pinhole K alone maps camera rays to them).
  */
 #include <libvslam/models/SE2.h>
 #include <mrpt/poses/CPose3D.h>
@@ -22,20 +26,29 @@
 
 namespace vslam
 {
-/** The pixel of landmark point P seen from robot pose r (in the landmark
- * frame) through the camera mount; with its 2x3 Jacobian in (x, y, theta)
- * if J is given. False if the point is not in front of the camera. */
-bool projectPlanar(const se2::Pose& r, const Eigen::Vector3d& P, const mrpt::poses::CPose3D& mount,
-	const cv::Matx33d& K, Eigen::Vector2d& pixel, Eigen::Matrix<double, 2, 3>* J = nullptr);
+/** Robot pose in the landmark frame, and how far the camera sits above
+ * (positive) or below its mount height there (m, in the landmark's units). */
+struct PlanarCameraState
+{
+	se2::Pose robot;
+	double height = 0;
+};
+
+/** The pixel of landmark point P seen from `s` through the camera mount;
+ * with its 2x4 Jacobian in (x, y, theta, height) if J is given. False if
+ * the point is not in front of the camera. */
+bool projectPlanar(const PlanarCameraState& s, const Eigen::Vector3d& P, const mrpt::poses::CPose3D& mount,
+	const cv::Matx33d& K, Eigen::Vector2d& pixel, Eigen::Matrix<double, 2, 4>* J = nullptr);
 
 struct PlanarPoseFit
 {
-	se2::Pose robotInLandmark;
+	PlanarCameraState state;
 	/** The inliers of the final pose (squared error within the threshold). */
 	std::vector<int> inliers;
 	double rmsPx = 0;  //!< over the inliers
-	/** Covariance of (x, y, theta): sigma^2 (J^T J)^-1 over the inliers,
-	 * sigma their RMS error (at least 0.5 px); infinite if singular. */
+	/** Covariance of (x, y, theta), the height marginalized: sigma^2 times
+	 * the inverse information over the inliers, sigma their RMS error (at
+	 * least 0.5 px); infinite if singular. */
 	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
 };
 
@@ -43,7 +56,7 @@ struct PlanarPoseFit
  * inliers): Levenberg-Marquardt on those, then the inliers again (within
  * `inlierPx` of their projection) from the new pose, a few rounds until
  * they stop changing. */
-PlanarPoseFit refinePlanarPose(const se2::Pose& initial, const std::vector<int>& initialInliers,
+PlanarPoseFit refinePlanarPose(const PlanarCameraState& initial, const std::vector<int>& initialInliers,
 	const std::vector<cv::Point3f>& points, const std::vector<cv::Point2f>& pixels,
 	const mrpt::poses::CPose3D& mount, const cv::Matx33d& K, double inlierPx);
 }  // namespace vslam

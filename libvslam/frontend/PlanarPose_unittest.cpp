@@ -39,24 +39,25 @@ std::vector<cv::Point2f> pixelsFrom(const mrpt::poses::CPose3D& camera, const st
 TEST(PlanarPose, ProjectionMatchesTheMountedCameraAndItsJacobianTheNumericalOne)
 {
 	std::mt19937 rng(3);
-	const se2::Pose r{0.4, -0.2, 12 * kDeg};
+	const PlanarCameraState r{{0.4, -0.2, 12 * kDeg}, 0.03};
 	const auto points = wallPoints(20, rng);
-	const auto expected = pixelsFrom(mrpt::poses::CPose3D(r.x, r.y, 0, r.phi, 0, 0) + kMount, points);
+	const auto expected =
+		pixelsFrom(mrpt::poses::CPose3D(r.robot.x, r.robot.y, r.height, r.robot.phi, 0, 0) + kMount, points);
 	for (size_t i = 0; i < points.size(); i++)
 	{
 		const Eigen::Vector3d P(points[i].x, points[i].y, points[i].z);
 		Eigen::Vector2d pixel;
-		Eigen::Matrix<double, 2, 3> J;
+		Eigen::Matrix<double, 2, 4> J;
 		ASSERT_TRUE(projectPlanar(r, P, kMount, kK, pixel, &J));
 		EXPECT_NEAR(pixel.x(), expected[i].x, 1e-3);
 		EXPECT_NEAR(pixel.y(), expected[i].y, 1e-3);
 		const Eigen::MatrixXd numerical = vslam::testing::numericalJacobian(
 			[&](const Eigen::VectorXd& v) {
 				Eigen::Vector2d q;
-				projectPlanar(vslam::testing::vecPose(v), P, kMount, kK, q);
+				projectPlanar({{v[0], v[1], v[2]}, v[3]}, P, kMount, kK, q);
 				return Eigen::VectorXd(q);
 			},
-			vslam::testing::poseVec(r));
+			Eigen::Vector4d(r.robot.x, r.robot.y, r.robot.phi, r.height));
 		EXPECT_LT((numerical - J).cwiseAbs().maxCoeff(), 1e-4) << "point " << i << "\n" << J << "\n" << numerical;
 	}
 	// Behind the camera: no pixel.
@@ -68,7 +69,7 @@ TEST(PlanarPose, ConvergesToTheTruePoseAndDropsOutliers)
 {
 	std::mt19937 rng(5);
 	const se2::Pose truth{0.6, 0.3, -8 * kDeg};
-	const auto points = wallPoints(60, rng);
+	auto points = wallPoints(60, rng);
 	auto pixels = pixelsFrom(mrpt::poses::CPose3D(truth.x, truth.y, 0, truth.phi, 0, 0) + kMount, points);
 	std::normal_distribution<float> noise(0, 0.5f);
 	for (auto& p : pixels) p += cv::Point2f(noise(rng), noise(rng));
@@ -76,17 +77,47 @@ TEST(PlanarPose, ConvergesToTheTruePoseAndDropsOutliers)
 	// Started off the truth, from the points a 6-DOF solve kept.
 	std::vector<int> kept;
 	for (int i = 10; i < 60; i++) kept.push_back(i);
-	const PlanarPoseFit fit =
-		refinePlanarPose({truth.x + 0.08, truth.y - 0.06, truth.phi + 3 * kDeg}, kept, points, pixels, kMount, kK, 3.0);
-	EXPECT_NEAR(fit.robotInLandmark.x, truth.x, 0.02);
-	EXPECT_NEAR(fit.robotInLandmark.y, truth.y, 0.02);
-	EXPECT_NEAR(fit.robotInLandmark.phi, truth.phi, 0.2 * kDeg);
+	const PlanarPoseFit fit = refinePlanarPose(
+		{{truth.x + 0.08, truth.y - 0.06, truth.phi + 3 * kDeg}, 0.02}, kept, points, pixels, kMount, kK, 3.0);
+	EXPECT_NEAR(fit.state.robot.x, truth.x, 0.02);
+	EXPECT_NEAR(fit.state.robot.y, truth.y, 0.02);
+	EXPECT_NEAR(fit.state.robot.phi, truth.phi, 0.2 * kDeg);
+	EXPECT_NEAR(fit.state.height, 0, 0.01);
 	EXPECT_EQ(fit.inliers.size(), 50u);
 	EXPECT_EQ(fit.inliers.front(), 10);
 	EXPECT_LT(fit.rmsPx, 1.0);
 	// The predicted std covers the error actually made, and is small.
 	EXPECT_GT(fit.covariance(0, 0), 0);
 	EXPECT_LT(std::sqrt(fit.covariance(2, 2)), 0.5 * kDeg);
+}
+
+TEST(PlanarPose, ALandmarkWithAScaleErrorGivesTheScaledPoseAndTheHeightTakesItUp)
+{
+	// The landmark's points (and so its frame's lengths) are 10% too large:
+	// the camera's true pose, scaled by 1.1, explains the pixels exactly,
+	// with the camera 1.1 times the mount's height above the floor.
+	std::mt19937 rng(9);
+	const se2::Pose truth{0.6, 0.3, -8 * kDeg};
+	const auto points = wallPoints(60, rng);
+	const auto pixels = pixelsFrom(mrpt::poses::CPose3D(truth.x, truth.y, 0, truth.phi, 0, 0) + kMount, points);
+	constexpr double s = 1.1;
+	std::vector<cv::Point3f> scaled;
+	for (const auto& p : points) scaled.push_back(p * s);
+	std::vector<int> all(points.size());
+	for (size_t i = 0; i < all.size(); i++) all[i] = static_cast<int>(i);
+	const PlanarPoseFit fit = refinePlanarPose({truth, 0}, all, scaled, pixels, kMount, kK, 3.0);
+	EXPECT_EQ(fit.inliers.size(), points.size());
+	EXPECT_NEAR(fit.state.robot.phi, truth.phi, 0.01 * kDeg);
+	// The robot's frame origin (below the camera) is where the scaled
+	// camera's mount places it.
+	const mrpt::poses::CPose3D camera = mrpt::poses::CPose3D(truth.x, truth.y, 0, truth.phi, 0, 0) + kMount;
+	const mrpt::poses::CPose3D fitted =
+		mrpt::poses::CPose3D(fit.state.robot.x, fit.state.robot.y, fit.state.height, fit.state.robot.phi, 0, 0) +
+		kMount;
+	EXPECT_NEAR(fitted.x(), s * camera.x(), 1e-3);
+	EXPECT_NEAR(fitted.y(), s * camera.y(), 1e-3);
+	EXPECT_NEAR(fitted.z(), s * camera.z(), 1e-3);
+	EXPECT_LT(fit.rmsPx, 1e-3);
 }
 
 TEST(PlanarPose, AViewOnlyATiltedCameraExplainsKeepsFewInliers)
@@ -100,9 +131,9 @@ TEST(PlanarPose, AViewOnlyATiltedCameraExplainsKeepsFewInliers)
 	const auto pixels = pixelsFrom(tiltedRobot + kMount, points);
 	std::vector<int> all(points.size());
 	for (size_t i = 0; i < all.size(); i++) all[i] = static_cast<int>(i);
-	const PlanarPoseFit fit = refinePlanarPose({0.5, 0.2, 5 * kDeg}, all, points, pixels, kMount, kK, 3.0);
+	const PlanarPoseFit fit = refinePlanarPose({{0.5, 0.2, 5 * kDeg}, 0}, all, points, pixels, kMount, kK, 3.0);
 	EXPECT_LT(fit.inliers.size(), 12u);
 	// The same from an upright robot: all inliers.
 	const auto upright = pixelsFrom(mrpt::poses::CPose3D(0.5, 0.2, 0, 5 * kDeg, 0, 0) + kMount, points);
-	EXPECT_EQ(refinePlanarPose({0.5, 0.2, 5 * kDeg}, all, points, upright, kMount, kK, 3.0).inliers.size(), 60u);
+	EXPECT_EQ(refinePlanarPose({{0.5, 0.2, 5 * kDeg}, 0}, all, points, upright, kMount, kK, 3.0).inliers.size(), 60u);
 }
