@@ -138,7 +138,10 @@ PlanarPoseFit vslam::refinePlanarPose(const PlanarCameraState& initial, const st
 		Eigen::Matrix<double, 2, 4> J;
 		if (projectPlanar(fit.state, toEigen(points[i]), mount, K, projected, &J)) H += J.transpose() * J;
 	}
-	const double sigma = std::max(0.5, fit.rmsPx);
+	// Per-coordinate pixel noise from the residuals (2 per inlier, 4
+	// parameters fitted), at least 0.35 px.
+	const double dof = std::max(1.0, 2.0 * fit.inliers.size() - 4);
+	const double sigma = std::max(0.35, std::sqrt(2 * fit.inliers.size() * fit.rmsPx * fit.rmsPx / dof / 2));
 	Eigen::FullPivLU<Eigen::Matrix4d> lu(H);
 	fit.covariance = lu.isInvertible()
 		? Eigen::Matrix3d((sigma * sigma * lu.inverse()).topLeftCorner<3, 3>())

@@ -47,8 +47,9 @@ struct PlanarPoseFit
 	std::vector<int> inliers;
 	double rmsPx = 0;  //!< over the inliers
 	/** Covariance of (x, y, theta), the height marginalized: sigma^2 times
-	 * the inverse information over the inliers, sigma their RMS error (at
-	 * least 0.5 px); infinite if singular. */
+	 * the inverse information over the inliers, sigma the per-coordinate
+	 * pixel noise their residuals imply (at least 0.35 px); infinite if
+	 * singular. */
 	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
 };
 
