@@ -7,10 +7,14 @@
 # its own measurements, and the same recognitions with the true measurement
 # each (--oracle-rawlog). The filter then runs on both with filter seeds
 # 1..FILTER_SEEDS (the filter alone takes about a second per run), and the
-# table gives the ATE RMSE (raw and SE(2)-aligned) and median, mean over the
-# filter seeds, for each rawlog and over all.
+# table gives the ATE RMSE (raw and SE(2)-aligned) and median of the online
+# estimate, and the SE(2)-aligned ATE RMSE of the most-likely path, mean
+# over the filter seeds, for each rawlog and over all.
 #
-#   scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
+#   [ORACLE_KIND=K] scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
+#
+# ORACLE_KIND (vslam-frontend --oracle-kind): all (default: every
+# measurement replaced by its truth), outliers, inliers, drop-outliers.
 #
 # The --set options go to both the front-end and the filter runs (vslam
 # section keys to vslam, vslam_frontend keys to both). FILTER_SEEDS: 4.
@@ -26,6 +30,7 @@ while [[ $# -gt 0 && "$1" != "--" ]]; do ARGS+=("$1"); shift; done
 [[ "${1:-}" == "--" ]] && shift
 [[ ${#ARGS[@]} -ge 3 && ${#ARGS[@]} -le 4 ]] || { echo "$usage" >&2; exit 1; }
 BATCH="${ARGS[0]}" SCENARIO="${ARGS[1]}" OUT="${ARGS[2]}" SEEDS="${ARGS[3]:-4}"
+KIND="${ORACLE_KIND:-all}"
 SETS=("$@")
 FRONTEND_SETS=()
 for ((i = 0; i < ${#SETS[@]}; i++)); do
@@ -39,7 +44,8 @@ mkdir -p "$OUT"
 # A key for the front-end settings, so cached measurement rawlogs match them.
 KEY="$(printf '%s ' "${FRONTEND_SETS[@]:-}" | md5sum | cut -c1-8)"
 
-# Mean over the filter seeds: raw RMSE, aligned RMSE, raw median.
+# Mean over the filter seeds: raw RMSE, aligned RMSE, raw median, and the
+# most-likely path's aligned RMSE.
 filter_runs() { # MEASUREMENT_RAWLOG GROUND_TRUTH
   for ((s = 1; s <= SEEDS; s++)); do
     local o="$OUT/run_$$"
@@ -49,24 +55,26 @@ filter_runs() { # MEASUREMENT_RAWLOG GROUND_TRUTH
       cat "$OUT/run_$$.log" >&2
       exit 1
     fi
-    local raw aligned
+    local raw aligned smoothed
     raw="$(grep '^  vslam:' "$o/run_summary.yaml")"
     aligned="$(grep '^  vslam_se2_aligned:' "$o/run_summary.yaml")"
-    echo "$(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$aligned") $(sed 's/.* median: \([0-9.]*\),.*/\1/' <<< "$raw")"
+    smoothed="$(grep '^  most_likely_path_se2_aligned:' "$o/run_summary.yaml")"
+    echo "$(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$aligned") $(sed 's/.* median: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$smoothed")"
     rm -rf "$o" "$OUT/run_$$.log"
-  done | awk '{r += $1; a += $2; m += $3; n++} END {printf "%.3f %.3f %.3f\n", r / n, a / n, m / n}'
+  done | awk '{r += $1; a += $2; m += $3; s += $4; n++} END {printf "%.3f %.3f %.3f %.3f\n", r / n, a / n, m / n, s / n}'
 }
 
-echo "| rawlog | measured: RMSE / aligned / median | true measurements: RMSE / aligned / median |"
+echo "| rawlog | measured: RMSE / aligned / median / most-likely path aligned | oracle ($KIND): RMSE / aligned / median / most-likely path aligned |"
 echo "|---|---|---|"
 TOTAL=""
 for rawlog in "${DATA[@]}"; do
   dir="$(dirname "$rawlog")" name="$(basename "$(dirname "$rawlog")")"
   gt="$(realpath "$dir/sim_groundtruth.tum")"
   measured="$OUT/${SCENARIO}_${name}_$KEY.rawlog" oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle.rawlog"
+  [[ "$KIND" == all ]] || oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle_$KIND.rawlog"
   if [[ ! -s "$oracle" ]]; then
     "$BIN/vslam-frontend" "$rawlog" "$measured" --config "$INI" "${FRONTEND_SETS[@]}" \
-      --ground-truth "$gt" --oracle-rawlog "$oracle.part" > "$OUT/${SCENARIO}_${name}_$KEY.log"
+      --ground-truth "$gt" --oracle-rawlog "$oracle.part" --oracle-kind "$KIND" > "$OUT/${SCENARIO}_${name}_$KEY.log"
     mv "$oracle.part" "$oracle"
   fi
   m="$(filter_runs "$measured" "$gt")" || exit 1
@@ -74,5 +82,5 @@ for rawlog in "${DATA[@]}"; do
   echo "| $SCENARIO $name | $(tr ' ' '/' <<< "$m" | sed 's|/| / |g') | $(tr ' ' '/' <<< "$t" | sed 's|/| / |g') |"
   TOTAL+="$m $t"$'\n'
 done
-awk 'NF == 6 {for (i = 1; i <= 6; i++) s[i] += $i; n++}
-  END {printf "| **mean** | **%.3f** / %.3f / %.3f | **%.3f** / %.3f / %.3f |\n", s[1]/n, s[2]/n, s[3]/n, s[4]/n, s[5]/n, s[6]/n}' <<< "$TOTAL"
+awk 'NF == 8 {for (i = 1; i <= 8; i++) s[i] += $i; n++}
+  END {printf "| **mean** | **%.3f** / %.3f / %.3f / %.3f | **%.3f** / %.3f / %.3f / %.3f |\n", s[1]/n, s[2]/n, s[3]/n, s[4]/n, s[5]/n, s[6]/n, s[7]/n, s[8]/n}' <<< "$TOTAL"
