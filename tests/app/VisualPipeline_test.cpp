@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 
 using vslam::testing::readFile;
@@ -156,16 +157,33 @@ std::vector<RecordedMeasurement> readMeasurements(const std::string& file, std::
 		}
 	return out;
 }
-}  // namespace
 
-TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements)
+/** A rendered room rawlog (1.5 laps) in `dir`, registered classes. */
+std::string writeOracleTestRawlog(TempDir& dir)
 {
 	vslam::registerObservationClasses();
-	TempDir dir;
 	const std::string rawlog = dir.file("room.rawlog");
 	vslam::testing::RoomRawlogOptions o;
 	o.laps = 1.5;
 	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	return rawlog;
+}
+
+/** The landmark frame (the robot's true pose when it was created, at
+ * tCreated) seen from the robot's true pose at t. */
+std::optional<mrpt::poses::CPose2D> trueMeasurement(const vslam::Trajectory& truth, double t, double tCreated)
+{
+	const auto now = vslam::interpolate(truth, t, 1.0);
+	const auto frame = vslam::interpolate(truth, tCreated, 1.0);
+	if (!now || !frame) return std::nullopt;
+	return mrpt::poses::CPose2D(frame->x, frame->y, frame->phi) - mrpt::poses::CPose2D(now->x, now->y, now->phi);
+}
+}  // namespace
+
+TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements)
+{
+	TempDir dir;
+	const std::string rawlog = writeOracleTestRawlog(dir);
 	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
 	const std::string fe = quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog"));
 	const auto r = runCommand(fe + " --ground-truth " + quoted(truthFile) + " --oracle-rawlog " + quoted(dir.file("oracle.rawlog")));
@@ -182,13 +200,9 @@ TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements
 	{
 		EXPECT_EQ(oracle[i].t, measured[i].t);
 		EXPECT_EQ(oracle[i].id, measured[i].id);
-		const auto now = vslam::interpolate(truth, oracle[i].t, 1.0);
-		const auto frame = vslam::interpolate(truth, createdAt.at(oracle[i].id), 1.0);
-		ASSERT_TRUE(now && frame);
-		// The landmark frame (the robot's true pose when it was created)
-		// seen from the robot's true pose now.
-		const mrpt::poses::CPose2D expected =
-			mrpt::poses::CPose2D(frame->x, frame->y, frame->phi) - mrpt::poses::CPose2D(now->x, now->y, now->phi);
+		const auto expectedIfAny = trueMeasurement(truth, oracle[i].t, createdAt.at(oracle[i].id));
+		ASSERT_TRUE(expectedIfAny);
+		const mrpt::poses::CPose2D& expected = *expectedIfAny;
 		EXPECT_NEAR((oracle[i].z - expected).norm(), 0, 1e-6);
 		EXPECT_NEAR(mrpt::math::wrapToPi(oracle[i].z.phi() - expected.phi()), 0, 1e-6);
 		EXPECT_LT((measured[i].z - expected).norm(), 0.3);  // the front-end's own error stays small
@@ -203,12 +217,8 @@ TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements
 
 TEST(VisualPipeline, OracleKindsReplaceOrDropOnlyTheMeasurementsBeyondOrWithinThreeSigma)
 {
-	vslam::registerObservationClasses();
 	TempDir dir;
-	const std::string rawlog = dir.file("room.rawlog");
-	vslam::testing::RoomRawlogOptions o;
-	o.laps = 1.5;
-	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	const std::string rawlog = writeOracleTestRawlog(dir);
 	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
 	// A Sigma_vis small enough that the front-end's errors fall on both sides
 	// of 3 sigma (1.5 cm, 0.6 deg).
@@ -230,11 +240,9 @@ TEST(VisualPipeline, OracleKindsReplaceOrDropOnlyTheMeasurementsBeyondOrWithinTh
 	size_t outliers = 0, kept = 0;
 	for (size_t i = 0; i < measured.size(); i++)
 	{
-		const auto now = vslam::interpolate(truth, measured[i].t, 1.0);
-		const auto frame = vslam::interpolate(truth, createdAt.at(measured[i].id), 1.0);
-		ASSERT_TRUE(now && frame);
-		const mrpt::poses::CPose2D expected =
-			mrpt::poses::CPose2D(frame->x, frame->y, frame->phi) - mrpt::poses::CPose2D(now->x, now->y, now->phi);
+		const auto expectedIfAny = trueMeasurement(truth, measured[i].t, createdAt.at(measured[i].id));
+		ASSERT_TRUE(expectedIfAny);
+		const mrpt::poses::CPose2D& expected = *expectedIfAny;
 		// Componentwise, as the accuracy figures count them.
 		const bool beyond = std::abs(measured[i].z.x() - expected.x()) > 0.015 ||
 			std::abs(measured[i].z.y() - expected.y()) > 0.015 ||
