@@ -12,6 +12,9 @@
  * of the image leave rotation and sideways translation confusable, and
  * their measurement can be degrees off with a small reprojection error:
  * the paper's statistics do not see it, the predicted uncertainty does.
+ * With recognition_planar the 6-DOF solution is refined with the robot on
+ * the floor (PlanarPose.h): its pose, inliers, ProjErrRMS and predicted
+ * uncertainty are then the planar fit's; Slope stays the 6-DOF solve's.
  */
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
@@ -27,7 +30,8 @@ struct VisualMeasurement
 {
 	int64_t landmarkID = 0;
 	mrpt::poses::CPose2D landmarkInRobot;  //!< (dx, dy, dtheta)
-	mrpt::poses::CPose3D robotInLandmark;  //!< the full 6-DOF solution
+	/** The 6-DOF solution (planar: x, y, yaw and the camera's height). */
+	mrpt::poses::CPose3D robotInLandmark;
 	int NPoints = 0;  //!< PnP inliers
 	double ProjErrRMS = 0;  //!< px, over the inliers
 	double Slope = 0;  //!< tilt of the robot's z axis against the landmark's, rad

@@ -129,7 +129,7 @@ PlanarPoseFit vslam::refinePlanarPose(const PlanarCameraState& initial, const st
 		if (same) break;
 	}
 	if (fit.inliers.empty()) return fit;
-	fit.rmsPx = std::sqrt(cost(fit.state, fit.inliers, points, pixels, mount, K) / fit.inliers.size());
+	fit.rmsPx = std::sqrt(cost(fit.state, fit.inliers, points, pixels, mount, K) / static_cast<double>(fit.inliers.size()));
 	// The information of the final inliers at the final pose.
 	Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
 	for (int i : fit.inliers)
@@ -141,7 +141,8 @@ PlanarPoseFit vslam::refinePlanarPose(const PlanarCameraState& initial, const st
 	// Per-coordinate pixel noise from the residuals (2 per inlier, 4
 	// parameters fitted), at least 0.35 px.
 	const double dof = std::max(1.0, 2.0 * fit.inliers.size() - 4);
-	const double sigma = std::max(0.35, std::sqrt(2 * fit.inliers.size() * fit.rmsPx * fit.rmsPx / dof / 2));
+	const double squaredResiduals = static_cast<double>(fit.inliers.size()) * fit.rmsPx * fit.rmsPx;
+	const double sigma = std::max(0.35, std::sqrt(squaredResiduals / dof));
 	Eigen::FullPivLU<Eigen::Matrix4d> lu(H);
 	fit.covariance = lu.isInvertible()
 		? Eigen::Matrix3d((sigma * sigma * lu.inverse()).topLeftCorner<3, 3>())
