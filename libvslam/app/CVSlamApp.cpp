@@ -381,17 +381,16 @@ int CVSlamApp::run()
 	// Final outputs: also after an error or an interruption.
 	const auto& best = filter.particle(filter.bestParticleIndex());
 	writeLandmarkMap(out("final_map.txt"), filter.landmarkIndex(), best.bank);
-	Trajectory smoothed;
+	Trajectory smoothed;  // the best particle's path
 	{
-		Trajectory& path = smoothed;
 		FILE* f = std::fopen(out("most_likely_path.txt").c_str(), "wt");
 		for (const auto& e : best.path.toVector())
 		{
-			path.push_back({toSeconds(e.t), e.pose});
+			smoothed.push_back({toSeconds(e.t), e.pose});
 			if (f) std::fprintf(f, "%.3f %.3f %.3f\n", e.pose.x, e.pose.y, e.pose.phi);
 		}
 		if (f) std::fclose(f);
-		writeTumTrajectory(out("most_likely_path.tum"), path);
+		writeTumTrajectory(out("most_likely_path.tum"), smoothed);
 	}
 	if (!groundTruth.empty())
 	{

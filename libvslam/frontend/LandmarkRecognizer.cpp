@@ -38,6 +38,13 @@ VisualMeasurement measurementFromPnP(const cv::Mat& rvec, const cv::Mat& tvec, c
 	return m;
 }
 
+/** recognition_min_inliers and recognition_min_inlier_ratio, for `inliers`
+ * of `matches` descriptor matches. */
+bool enoughInliers(int inliers, int matches, const TVisualFrontEndOptions& o)
+{
+	return inliers >= o.recognition_min_inliers && inliers >= o.recognition_min_inlier_ratio * static_cast<double>(matches);
+}
+
 /** Sets the position and heading std of `m` from the covariance of its
  * (dx, dy, dtheta). */
 void setPredictedStd(VisualMeasurement& m, const Eigen::Matrix3d& cov)
@@ -60,8 +67,7 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 		{m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw()}, m.robotInLandmark.z()};
 	const PlanarPoseFit fit = refinePlanarPose(initial, inliers, object, pixels, mount, K, o.recognition_ransac_px);
 	const int n = static_cast<int>(fit.inliers.size());
-	if (n < o.recognition_min_inliers || n < o.recognition_min_inlier_ratio * static_cast<double>(m.matches))
-		return std::nullopt;
+	if (!enoughInliers(n, m.matches, o)) return std::nullopt;
 	const se2::Pose& r = fit.state.robot;
 	m.robotInLandmark = mrpt::poses::CPose3D(r.x, r.y, fit.state.height, r.phi, 0, 0);
 	m.landmarkInRobot = mrpt::poses::CPose2D() - mrpt::poses::CPose2D(r.x, r.y, r.phi);
@@ -121,8 +127,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 		}
 	}
 	const int n = static_cast<int>(refinedInliers.size());
-	if (n < o.recognition_min_inliers || n < o.recognition_min_inlier_ratio * static_cast<double>(matches.size()))
-		return std::nullopt;
+	if (!enoughInliers(n, static_cast<int>(matches.size()), o)) return std::nullopt;
 
 	VisualMeasurement m = measurementFromPnP(rvec, tvec, mount);
 	m.landmarkID = lm.id;
