@@ -236,6 +236,9 @@ int main(int argc, const char** argv)
 				  << total.created << " built";
 		for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
 		std::cout << "\n";
+		std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
+				  << " poorly conditioned (recognition_max_std_*), " << frontEnd.ambiguousRecognitions()
+				  << " ambiguous (recognition_ambiguity_min_gap)\n";
 		// Sigma_vis and the pre-filter of the INI, for the accuracy figures.
 		TVSlamFilterOptions filter;
 		if (!iniFile.empty()) filter.loadFromConfig(config::parseIniWithOverrides(config::readIniFile(iniFile), {}));

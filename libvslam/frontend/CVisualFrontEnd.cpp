@@ -104,6 +104,12 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 			m_poorlyConditioned++;
 			continue;
 		}
+		// ... or with a second pose that explains the image almost as well.
+		if (m->ambiguityGap < m_options.recognition_ambiguity_min_gap)
+		{
+			m_ambiguous++;
+			continue;
+		}
 		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		auto o = CObservationVisualLandmark::Create();
 		o->timestamp = obs.timestamp;

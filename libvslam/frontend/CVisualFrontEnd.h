@@ -60,6 +60,8 @@ class CVisualFrontEnd
 	/** Recognitions dropped for their predicted uncertainty
 	 * (recognition_max_std_xy / _phi). */
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
+	/** Recognitions dropped for recognition_ambiguity_min_gap. */
+	size_t ambiguousRecognitions() const { return m_ambiguous; }
 	/** Landmark creations tried, and those rejected by reason (the
 	 * creator's reason with its numbers replaced by "N"). */
 	size_t creationAttempts() const { return m_creationAttempts; }
@@ -84,6 +86,7 @@ class CVisualFrontEnd
 	StageSeconds m_total;
 	size_t m_images = 0;
 	size_t m_poorlyConditioned = 0;
+	size_t m_ambiguous = 0;
 	size_t m_creationAttempts = 0;
 	std::map<std::string, size_t> m_creationRejections;
 };

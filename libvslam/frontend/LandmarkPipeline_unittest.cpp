@@ -289,3 +289,36 @@ TEST(LandmarkRecognizer, PredictedUncertaintyMatchesTheScatterAndGrowsForASmallP
 	EXPECT_GT(s[3], 0.7 * s[2]);
 	EXPECT_LT(s[3], 1.5 * s[2]);
 }
+
+namespace
+{
+/** The ambiguity gap of a recognition of `scene` (taken as the landmark,
+ * its frame the origin) from `query`, with 0.5 px of pixel noise. */
+double ambiguityGapOf(const Scene& scene, const mrpt::poses::CPose2D& query, const TVisualFrontEndOptions& o)
+{
+	std::mt19937 rng(13);
+	VisualLandmarkModel lm;
+	for (const auto& p : scene.points)
+		lm.points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+	lm.descriptors = scene.descriptors;
+	const auto m = recognizeLandmark(view(scene, query, rng, 0.5), lm, kMount, o);
+	EXPECT_TRUE(m);
+	return m ? m->ambiguityGap : -1;
+}
+}  // namespace
+
+TEST(LandmarkRecognizer, AFarFlatPatchIsFlaggedAmbiguousAWideSceneIsNot)
+{
+	std::mt19937 rng(14);
+	Scene patch = makeScene(rng, 60);
+	// 0.6 m x 0.6 m on the wall plane x = 7, seen 5 m away and 30 deg off its normal.
+	for (auto& p : patch.points) p = cv::Point3d(7, 0.6 * (p.y + 2) / 4 - 0.3, 0.5 + 0.6 * (p.z - 0.2) / 2);
+	const mrpt::poses::CPose2D oblique(7 - 5 * std::cos(30 * kDeg), 5 * std::sin(30 * kDeg), -30 * kDeg);
+	TVisualFrontEndOptions o;
+	EXPECT_TRUE(std::isinf(ambiguityGapOf(patch, oblique, o))) << "not tested when the option is 0";
+	o.recognition_ambiguity_min_gap = 25;
+	EXPECT_LT(ambiguityGapOf(patch, oblique, o), 25);
+
+	const Scene wide = makeScene(rng, 300);
+	EXPECT_GT(ambiguityGapOf(wide, mrpt::poses::CPose2D(1.2, 0.3, -5 * kDeg), o), 1000);
+}

@@ -1,6 +1,7 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/PlanarPose.h>
+#include <libvslam/frontend/PoseAmbiguity.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/wrap2pi.h>
 
@@ -134,6 +135,19 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(sq / n);
 	m.matches = static_cast<int>(matches.size());
+	if (o.recognition_ambiguity_min_gap > 0)
+	{
+		std::vector<cv::Point3f> inlierObject;
+		std::vector<cv::Point2f> inlierPixels;
+		for (int i : refinedInliers)
+		{
+			inlierObject.push_back(object[i]);
+			inlierPixels.push_back(pixels[i]);
+		}
+		const CameraPoseFit pose{cv::Vec3d(rvec), cv::Vec3d(tvec), m.ProjErrRMS};
+		if (const auto other = competingPose(inlierObject, inlierPixels, image.camera.K(), pose))
+			m.ambiguityGap = reprojectionCostGap(pose, *other, inlierObject.size());
+	}
 	if (o.recognition_planar) return planarMeasurement(m, refinedInliers, object, pixels, image.camera.K(), mount, o);
 
 	// Predicted uncertainty: pose covariance sigma^2 (J^T J)^-1 of the

@@ -12,6 +12,9 @@
  * of the image leave rotation and sideways translation confusable, and
  * their measurement can be degrees off with a small reprojection error:
  * the paper's statistics do not see it, the predicted uncertainty does.
+ * A few points on one surface seen small have a second, mirrored pose
+ * that reprojects almost as well; with recognition_ambiguity_min_gap the
+ * gap between the two is measured (ambiguityGap) for the caller to judge.
  * With recognition_planar the 6-DOF solution is refined with the robot on
  * the floor (PlanarPose.h): its pose, inliers, ProjErrRMS and predicted
  * uncertainty are then the planar fit's; Slope stays the 6-DOF solve's.
@@ -22,6 +25,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <limits>
 #include <optional>
 
 namespace vslam
@@ -40,6 +44,10 @@ struct VisualMeasurement
 	 * (sqrt of the largest eigenvalue of its 2x2 covariance, m) and of the
 	 * heading (rad). */
 	double stdPosition = 0, stdHeading = 0;
+	/** How much better the 6-DOF pose explains its inliers than the best
+	 * competing pose (PoseAmbiguity.h), in pixel noise variances; infinite
+	 * when there is none or recognition_ambiguity_min_gap is 0 (not tested). */
+	double ambiguityGap = std::numeric_limits<double>::infinity();
 };
 
 /** The measurement of `landmark` in `image`, if the pose solve finds at

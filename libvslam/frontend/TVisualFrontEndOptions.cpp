@@ -62,6 +62,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
 	recognition_max_std_phi = readDegreesAsRadians(
 		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
+	recognition_ambiguity_min_gap =
+		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
 	{
 		static const std::vector<std::string> kinds{"kdtree", "flann"};
 		const size_t def = std::find(kinds.begin(), kinds.end(), search_index) - kinds.begin();
@@ -133,6 +135,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Reject a measurement whose predicted position std exceeds this [m] (0: off)");
 	c.write(s, "recognition_max_std_phi_deg", recognition_max_std_phi * 180 / M_PI, 30, 10,
 		"Reject a measurement whose predicted heading std exceeds this [deg] (0: off)");
+	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
+		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
 	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks)");
 	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
 	c.write(s, "search_flann_trees", search_flann_trees, 30, 10, "flann: randomized k-d trees per index level");

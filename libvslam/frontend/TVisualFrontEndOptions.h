@@ -78,6 +78,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * whatever their reprojection error (0: no limit). */
 	double recognition_max_std_xy = 0;  //!< m
 	double recognition_max_std_phi = 0;  //!< rad (INI: degrees)
+	/** A recognition is kept only if its pose explains the inliers better
+	 * than the best competing pose (the mirror pose of a plane seen small,
+	 * PoseAmbiguity.h) by at least this much: the difference of their
+	 * squared reprojection errors in units of the pixel noise variance
+	 * (0: no test). */
+	double recognition_ambiguity_min_gap = 0;
 	/** The descriptor index (DescriptorIndex.h): "kdtree" (nanoflann,
 	 * eps-approximate) or "flann" (OpenCV FLANN randomized k-d trees,
 	 * bounded checks: cost per query nearly independent of the map size). */
