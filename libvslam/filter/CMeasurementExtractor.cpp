@@ -18,6 +18,8 @@ void CMeasurementExtractor::TVisualOptions::loadFromConfigFile(
 	std_dphi = readDegreesAsRadians(c, s, "std_dphi_deg", std_dphi, Range::positive());
 	time_jitter_std =
 		readDouble(c, s, "time_jitter_std", time_jitter_std, Range::nonNegative());
+	predicted_cov_scale =
+		readDouble(c, s, "predicted_cov_scale", predicted_cov_scale, Range::nonNegative());
 }
 
 void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
@@ -29,6 +31,8 @@ void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
 		"Visual measurement noise, dtheta [deg] (paper: 0.0019 rad^2 = 2.4975 deg)");
 	c.write(s, "time_jitter_std", time_jitter_std, 25, 12,
 		"Timestamp uncertainty of images vs odometry [s]: noise grows with speed and turn rate");
+	c.write(s, "predicted_cov_scale", predicted_cov_scale, 25, 12,
+		"Add this factor^2 x each measurement's predicted covariance to Sigma_vis (0: Sigma_vis alone, the paper)");
 }
 
 void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
@@ -107,6 +111,14 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 			m.R = MatN::Zero(3, 3);
 			m.R.diagonal() << visual.std_dx * visual.std_dx,
 				visual.std_dy * visual.std_dy, visual.std_dphi * visual.std_dphi;
+			if (visual.predicted_cov_scale > 0)
+			{
+				const auto& P = v->relPoseCov.asEigen();
+				if (!P.allFinite() || (P.diagonal().array() < 0).any())
+					throw InputError("visual measurement of landmark " + std::to_string(v->landmarkID) +
+						" has a predicted covariance that is not finite or has a negative variance");
+				m.R += visual.predicted_cov_scale * visual.predicted_cov_scale * P;
+			}
 			out.measurements.push_back(std::move(m));
 		}
 		else if (auto c = std::dynamic_pointer_cast<CObservationLandmarkCreated>(obs))

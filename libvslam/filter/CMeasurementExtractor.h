@@ -57,6 +57,13 @@ class CMeasurementExtractor
 		double std_dphi = std::sqrt(0.0019);  //!< rad (INI: degrees)
 		/** Timestamp uncertainty of the images against odometry (s). */
 		double time_jitter_std = 0;
+		/** Each measurement's noise is Sigma_vis plus this factor squared
+		 * times the covariance its pose solve predicts (relPoseCov, where
+		 * the rawlog has one): a measurement from a few points in a small
+		 * part of the image counts for less. The prediction sees only the
+		 * pixel error, not the landmark's own, hence a factor. 0: Sigma_vis
+		 * alone (the paper). */
+		double predicted_cov_scale = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,

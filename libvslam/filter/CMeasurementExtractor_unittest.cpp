@@ -84,6 +84,40 @@ TEST(CMeasurementExtractor, RangeBearingWithIdsSensorPoseAndLimits)
 	EXPECT_NEAR(ex.extract(sf).measurements[0].R(0, 0), 0.25, 1e-12);
 }
 
+TEST(CMeasurementExtractor, PredictedCovarianceScaledAddsToSigmaVisOnlyWhenAsked)
+{
+	auto v = visual(1, 1.0, 40);
+	v->relPoseCov(0, 0) = 0.01;
+	v->relPoseCov(1, 1) = 0.04;
+	v->relPoseCov(0, 1) = v->relPoseCov(1, 0) = 0.005;
+	v->relPoseCov(2, 2) = 1e-4;
+	mrpt::obs::CSensoryFrame sf;
+	sf.insert(v);
+	sf.insert(visual(2, 1.0, 40));  // no prediction (all zero): Sigma_vis alone
+
+	CMeasurementExtractor paper;
+	const auto fixed = paper.extract(sf).measurements;
+	ASSERT_EQ(fixed.size(), 2u);
+	EXPECT_NEAR(fixed[0].R(1, 1), 0.09 * 0.09, 1e-12);
+	EXPECT_EQ(fixed[0].R(0, 1), 0);
+
+	CMeasurementExtractor scaled;
+	scaled.visual.predicted_cov_scale = 3;
+	const auto m = scaled.extract(sf).measurements;
+	ASSERT_EQ(m.size(), 2u);
+	EXPECT_NEAR(m[0].R(0, 0), 0.09 * 0.09 + 9 * 0.01, 1e-12);
+	EXPECT_NEAR(m[0].R(1, 1), 0.09 * 0.09 + 9 * 0.04, 1e-12);
+	EXPECT_NEAR(m[0].R(0, 1), 9 * 0.005, 1e-12);
+	EXPECT_NEAR(m[0].R(1, 0), 9 * 0.005, 1e-12);
+	EXPECT_NEAR(m[0].R(2, 2), 0.0019 + 9e-4, 1e-9);
+	EXPECT_EQ(m[1].R, fixed[1].R);
+
+	v->relPoseCov(2, 2) = std::numeric_limits<double>::infinity();
+	EXPECT_THROW(scaled.extract(sf), InputError);
+	v->relPoseCov(2, 2) = -1e-4;
+	EXPECT_THROW(scaled.extract(sf), InputError);
+}
+
 TEST(CMeasurementExtractor, NonFiniteInputIsAnInputError)
 {
 	CMeasurementExtractor ex;

@@ -97,8 +97,10 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		lm->lastSeen = view.time;
 		recognized.push_back(c.id);
 		mostInliers = std::max(mostInliers, m->NPoints);
-		// Recognized (no new landmark here), but measured too poorly to report.
-		if ((m_options.recognition_max_std_xy > 0 && m->stdPosition > m_options.recognition_max_std_xy) ||
+		// Recognized (no new landmark here), but measured too poorly to report
+		// (a degenerate solve measures nothing).
+		if (!m->covariance.allFinite() ||
+			(m_options.recognition_max_std_xy > 0 && m->stdPosition > m_options.recognition_max_std_xy) ||
 			(m_options.recognition_max_std_phi > 0 && m->stdHeading > m_options.recognition_max_std_phi))
 		{
 			m_poorlyConditioned++;
@@ -120,6 +122,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		o->NPoints = static_cast<uint32_t>(m->NPoints);
 		o->Slope = m->Slope;
 		o->sensorPoseOnRobot = obs.cameraPose;
+		o->relPoseCov = mrpt::math::CMatrixDouble33(m->covariance);
 		out.measurements.push_back(o);
 	}
 	out.seconds.pose = since(t);

@@ -58,7 +58,7 @@ class CVisualFrontEnd
 	const StageSeconds& totalSeconds() const { return m_total; }
 	size_t imagesProcessed() const { return m_images; }
 	/** Recognitions dropped for their predicted uncertainty
-	 * (recognition_max_std_xy / _phi). */
+	 * (recognition_max_std_xy / _phi, or a degenerate solve). */
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
 	/** Recognitions dropped for recognition_ambiguity_min_gap. */
 	size_t ambiguousRecognitions() const { return m_ambiguous; }

@@ -28,6 +28,7 @@ struct LapsResult
 	/** Per landmark, measured over true range of each measurement from
 	 * beyond 0.5 m in the last lap: how far off the landmark's scale is. */
 	std::map<int64_t, std::vector<double>> rangeRatiosLastLap;
+	size_t withPredictedCovariance = 0;  //!< measurements with a positive finite relPoseCov diagonal
 };
 
 /** `odometrySigma`: the odometry the front-end gets is the true path plus
@@ -81,6 +82,8 @@ LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double 
 			const mrpt::poses::CPose2D truth = frameOf.at(m->landmarkID) - robot;
 			run.translationErrors.push_back((m->relPose - truth).norm());
 			run.headingErrors.push_back(std::abs(mrpt::math::wrapToPi(m->relPose.phi() - truth.phi())));
+			const auto d = m->relPoseCov.asEigen().diagonal();
+			if (d.allFinite() && (d.array() > 0).all()) run.withPredictedCovariance++;
 			if (k >= frames - static_cast<int>(2 * M_PI * radius / step) && truth.norm() > 0.5)
 				run.rangeRatiosLastLap[m->landmarkID].push_back(m->relPose.norm() / truth.norm());
 		}
@@ -103,6 +106,7 @@ TEST(CVisualFrontEnd, CreatesOnTheFirstLapRecognizesOnTheSecondWithTheTruePose)
 	EXPECT_GE(run.translationErrors.size(), run.images / 2) << "recognitions";
 	EXPECT_LT(median(run.translationErrors), 0.03);
 	EXPECT_LT(median(run.headingErrors), 0.5 * kDeg);
+	EXPECT_EQ(run.withPredictedCovariance, run.translationErrors.size());
 	// No false recognitions: every measurement is near the truth (the
 	// worst, ~0.13 m and ~3 deg, have 13-25 inliers at the edge of a
 	// landmark's reach).

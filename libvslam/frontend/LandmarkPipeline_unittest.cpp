@@ -256,6 +256,7 @@ std::array<double, 4> predictedAgainstEmpirical(const Scene& scene, const mrpt::
 		sx2 += ex * ex + ey * ey;
 		sh2 += std::pow(mrpt::math::wrapToPi<double>(m->landmarkInRobot.phi() - truth.phi()), 2);
 		predX += m->stdPosition, predH += m->stdHeading;
+		EXPECT_NEAR(std::sqrt(m->covariance(2, 2)), m->stdHeading, 1e-12);
 		n++;
 	}
 	EXPECT_GE(n, trials * 9 / 10);

@@ -46,10 +46,11 @@ bool enoughInliers(int inliers, int matches, const TVisualFrontEndOptions& o)
 	return inliers >= o.recognition_min_inliers && inliers >= o.recognition_min_inlier_ratio * static_cast<double>(matches);
 }
 
-/** Sets the position and heading std of `m` from the covariance of its
- * (dx, dy, dtheta). */
-void setPredictedStd(VisualMeasurement& m, const Eigen::Matrix3d& cov)
+/** Sets the predicted covariance of `m`'s (dx, dy, dtheta), and the
+ * position and heading std from it. */
+void setPredictedCovariance(VisualMeasurement& m, const Eigen::Matrix3d& cov)
 {
+	m.covariance = cov;
 	m.stdPosition = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov.topLeftCorner<2, 2>())
 												 .eigenvalues()
 												 .maxCoeff()));
@@ -79,7 +80,7 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	const double c = std::cos(r.phi), s = std::sin(r.phi);
 	Eigen::Matrix3d F;
 	F << -c, -s, s * r.x - c * r.y, s, -c, c * r.x + s * r.y, 0, 0, -1;
-	setPredictedStd(m, F * fit.covariance * F.transpose());
+	setPredictedCovariance(m, F * fit.covariance * F.transpose());
 	return m;
 }
 }  // namespace
@@ -170,6 +171,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	if (!lu.isInvertible())
 	{
 		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
+		m.covariance.setConstant(std::numeric_limits<double>::infinity());
 		return m;
 	}
 	const Eigen::Matrix<double, 6, 6> poseCov = sigmaPx * sigmaPx * lu.inverse();
@@ -186,6 +188,6 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 		F(1, k) = (a.y() - b.y()) / (2 * h);
 		F(2, k) = mrpt::math::wrapToPi(a.phi() - b.phi()) / (2 * h);
 	}
-	setPredictedStd(m, F * poseCov * F.transpose());
+	setPredictedCovariance(m, F * poseCov * F.transpose());
 	return m;
 }

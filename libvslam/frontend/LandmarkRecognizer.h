@@ -25,6 +25,8 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <Eigen/Core>
+
 #include <limits>
 #include <optional>
 
@@ -44,6 +46,9 @@ struct VisualMeasurement
 	 * (sqrt of the largest eigenvalue of its 2x2 covariance, m) and of the
 	 * heading (rad). */
 	double stdPosition = 0, stdHeading = 0;
+	/** The predicted covariance of (dx, dy, dtheta) they come from;
+	 * infinite where the solve is degenerate. */
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
 	/** How much better the 6-DOF pose explains its inliers than the best
 	 * competing pose (PoseAmbiguity.h), in pixel noise variances; infinite
 	 * when there is none or recognition_ambiguity_min_gap is 0 (not tested). */

@@ -9,7 +9,7 @@ using namespace vslam;
 
 IMPLEMENTS_SERIALIZABLE(CObservationVisualLandmark, mrpt::obs::CObservation, vslam)
 
-uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 0; }
+uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 1; }
 
 void CObservationVisualLandmark::serializeTo(
 	mrpt::serialization::CArchive& out) const
@@ -18,6 +18,8 @@ void CObservationVisualLandmark::serializeTo(
 	out << timestamp << sensorLabel;
 	out << landmarkID << relPose.x() << relPose.y() << relPose.phi();
 	out << ProjErrRMS << NPoints << Slope << sensorPoseOnRobot;
+	for (int r = 0; r < 3; r++)
+		for (int c = 0; c < 3; c++) out << relPoseCov(r, c);
 }
 
 void CObservationVisualLandmark::serializeFrom(
@@ -26,6 +28,7 @@ void CObservationVisualLandmark::serializeFrom(
 	switch (version)
 	{
 		case 0:
+		case 1:
 		{
 			double x = 0, y = 0, phi = 0;
 			in >> timestamp;
@@ -33,6 +36,10 @@ void CObservationVisualLandmark::serializeFrom(
 			in >> landmarkID >> x >> y >> phi;
 			relPose = mrpt::poses::CPose2D(x, y, phi);
 			in >> ProjErrRMS >> NPoints >> Slope >> sensorPoseOnRobot;
+			relPoseCov.setZero();
+			if (version >= 1)
+				for (int r = 0; r < 3; r++)
+					for (int c = 0; c < 3; c++) in >> relPoseCov(r, c);
 		}
 		break;
 		default:
@@ -49,7 +56,8 @@ void CObservationVisualLandmark::getDescriptionAsText(std::ostream& o) const
 	  << " ProjErrRMS : " << ProjErrRMS << " px\n"
 	  << " NPoints    : " << NPoints << "\n"
 	  << " Slope      : " << Slope << " rad\n"
-	  << " sensorPose : " << sensorPoseOnRobot << "\n";
+	  << " sensorPose : " << sensorPoseOnRobot << "\n"
+	  << " relPoseCov : " << relPoseCov.inMatlabFormat() << " (predicted; zero: not known)\n";
 }
 
 std::string CObservationVisualLandmark::exportTxtHeader() const

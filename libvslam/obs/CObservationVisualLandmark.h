@@ -3,8 +3,10 @@
  * A visual measurement emitted by the front-end: landmark n was recognized in
  * the current image, and the landmark frame lies at the relative pose
  * (dx, dy, dtheta) in the robot frame (x forward, y left, origin on the floor
- * below the drive-wheel axis), with the paper's three quality statistics.
+ * below the drive-wheel axis), with the paper's three quality statistics
+ * and (version 1) the covariance the pose solve predicts for it.
  */
+#include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
@@ -34,6 +36,11 @@ class CObservationVisualLandmark : public mrpt::obs::CObservation
 	/** Camera pose on the robot (informational: relPose is already in the
 	 * robot frame). */
 	mrpt::poses::CPose3D sensorPoseOnRobot;
+	/** Covariance of relPose (dx, dy, dtheta) as the front-end's pose solve
+	 * predicts it from the geometry of its inliers and their pixel error
+	 * alone (not the landmark's own error). All zero: not known (rawlogs
+	 * of serialization version 0, other front-ends). */
+	mrpt::math::CMatrixDouble33 relPoseCov;
 
 	void getSensorPose(mrpt::poses::CPose3D& out) const override
 	{

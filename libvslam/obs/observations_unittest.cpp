@@ -30,6 +30,10 @@ TEST(Observations, VisualLandmarkRoundTrip)
 	o.NPoints = 42;
 	o.Slope = -0.01;
 	o.sensorPoseOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.3, 0, 0.2, 0);
+	o.relPoseCov(0, 0) = 4e-4;
+	o.relPoseCov(1, 1) = 9e-4;
+	o.relPoseCov(2, 2) = 1e-5;
+	o.relPoseCov(0, 1) = o.relPoseCov(1, 0) = -1e-4;
 
 	mrpt::io::CMemoryStream buf;
 	auto arch = mrpt::serialization::archiveFrom(buf);
@@ -45,8 +49,37 @@ TEST(Observations, VisualLandmarkRoundTrip)
 	EXPECT_EQ(back->NPoints, o.NPoints);
 	EXPECT_EQ(back->Slope, o.Slope);
 	EXPECT_EQ(back->sensorPoseOnRobot, o.sensorPoseOnRobot);
+	EXPECT_EQ(back->relPoseCov, o.relPoseCov);
 	EXPECT_EQ(back->exportTxtDataRow(), o.exportTxtDataRow());
 	EXPECT_EQ(o.exportTxtHeader(), "landmarkID dx dy dtheta ProjErrRMS NPoints Slope");
+}
+
+TEST(Observations, VisualLandmarkOfVersionZeroReadsWithAnUnknownCovariance)
+{
+	// Version 0 is version 1 without the trailing covariance (9 doubles).
+	CObservationVisualLandmark o;
+	o.landmarkID = 7;
+	o.relPose = mrpt::poses::CPose2D(1, 2, 0.5);
+	o.relPoseCov(0, 0) = 1;
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	const auto* data = static_cast<const uint8_t*>(buf.getRawBufferData());
+	std::vector<uint8_t> bytes(data, data + buf.getTotalBytesCount());
+	const std::string name = "vslam::CObservationVisualLandmark";
+	const size_t versionPos = 1 + name.size();
+	ASSERT_EQ(bytes[versionPos], 1);
+	bytes[versionPos] = 0;
+	const size_t covBytes = 9 * sizeof(double);
+	bytes.erase(bytes.end() - 1 - static_cast<long>(covBytes), bytes.end() - 1);  // keep the end marker
+	mrpt::io::CMemoryStream old;
+	old.assignMemoryNotOwn(bytes.data(), bytes.size());
+	auto oldArch = mrpt::serialization::archiveFrom(old);
+	auto back = oldArch.ReadObject<CObservationVisualLandmark>();
+	ASSERT_TRUE(back);
+	EXPECT_EQ(back->landmarkID, 7);
+	EXPECT_EQ(back->relPose, o.relPose);
+	EXPECT_EQ(back->relPoseCov, mrpt::math::CMatrixDouble33::Zero());
 }
 
 TEST(Observations, LandmarkCreatedRoundTrip)
