@@ -28,6 +28,9 @@ struct LandmarkMeasurementRecord
 	double ProjErrRMS = 0;
 	uint32_t NPoints = 0;
 	double Slope = 0;
+	/** Predicted std of dx, dy (m) and dtheta (rad) from the pose solve
+	 * (0: not known). */
+	double predictedStdX = 0, predictedStdY = 0, predictedStdPhi = 0;
 };
 
 struct MeasurementErrorStats
