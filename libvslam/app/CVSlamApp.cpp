@@ -375,6 +375,8 @@ int CVSlamApp::run()
 		frontEndSummary.indexBytes = static_cast<double>(db.indexBytes());
 		frontEndSummary.creationAttempts = frontEnd->creationAttempts();
 		frontEndSummary.creationRejections = frontEnd->creationRejections();
+		frontEndSummary.poorlyConditioned = frontEnd->poorlyConditionedRecognitions();
+		frontEndSummary.ambiguous = frontEnd->ambiguousRecognitions();
 		summary.frontEnd = frontEndSummary;
 	}
 

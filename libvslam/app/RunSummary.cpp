@@ -126,6 +126,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 		  << "  ms_per_image: {features: " << perImage(e.featuresSeconds) << ", search: "
 		  << perImage(e.searchSeconds) << ", pose: " << perImage(e.poseSeconds)
 		  << ", creation: " << perImage(e.creationSeconds) << "}\n"
+		  << "  recognitions_not_reported: {poorly_conditioned: " << e.poorlyConditioned
+		  << ", ambiguous: " << e.ambiguous << "}\n"
 		  << "  creation_attempts: " << e.creationAttempts << "\n"
 		  << "  creation_rejected:";
 		if (e.creationRejections.empty()) o << " {}";

@@ -35,6 +35,9 @@ struct RunSummary
 		double bytesPerLandmark = 0, indexBytes = 0;
 		size_t creationAttempts = 0;
 		std::map<std::string, size_t> creationRejections;  //!< by reason
+		/** Recognitions not reported: predicted too uncertain (or degenerate),
+		 * and ambiguous (recognition_max_std_*, recognition_ambiguity_min_gap). */
+		size_t poorlyConditioned = 0, ambiguous = 0;
 	};
 	std::optional<FrontEnd> frontEnd;
 

@@ -65,6 +65,8 @@ TEST(VisualPipeline, ImagesInOneRunBeatDeadReckoning)
 	const std::string summary = readFile(dir.file("out/run_summary.yaml"));
 	EXPECT_EQ(summaryValue(summary, "front_end:\n  images:"), images) << summary;
 	EXPECT_GE(summaryValue(summary, "landmarks_created:"), 3) << summary;
+	EXPECT_GE(summaryValue(summary, "recognitions_not_reported: \\{poorly_conditioned:"), 0) << summary;
+	EXPECT_GE(summaryValue(summary, "recognitions_not_reported: \\{[^}]*ambiguous:"), 0) << summary;
 	EXPECT_GT(summaryValue(summary, "  measurements:"), images / 3) << summary;
 	const double vslamRmse = summaryValue(summary, "  vslam: \\{associated_poses: [0-9]+, rmse:");
 	const double deadReckoning = summaryValue(summary, "  dead_reckoning: \\{associated_poses: [0-9]+, rmse:");
