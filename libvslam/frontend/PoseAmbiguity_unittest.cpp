@@ -69,15 +69,30 @@ double viewingAngle(const CameraPoseFit& p)
 	const cv::Vec3d C = -(R.t() * p.tvec);
 	return std::atan2(C[0], C[2]);
 }
+/** n points on a square of `size` (with `relief`) seen from `distance` at
+ * `angle` off its normal with `noisePx` of pixel noise, and the pose
+ * refined from the truth, as the recognizer has it. */
+struct Sighting
+{
+	std::vector<cv::Point3f> object;
+	std::vector<cv::Point2f> pixels;
+	CameraPoseFit pose;
+};
+
+Sighting sight(int n, double size, double relief, double distance, double angle, double noisePx, uint32_t seed)
+{
+	std::mt19937 rng(seed);
+	Sighting s;
+	s.object = squarePoints(n, size, relief, rng);
+	s.pixels = noisyPixels(s.object, cameraLookingAtOrigin(distance, angle), noisePx, rng);
+	s.pose = refined(s.object, s.pixels, cameraLookingAtOrigin(distance, angle));
+	return s;
+}
 }  // namespace
 
 TEST(PoseAmbiguity, AFarPlaneHasAMirroredPoseThatReprojectsAsWell)
 {
-	std::mt19937 rng(3);
-	const auto object = squarePoints(30, 0.5, 0, rng);
-	const CameraPoseFit truth = cameraLookingAtOrigin(6.0, 30 * kDeg);
-	const auto pixels = noisyPixels(object, truth, 0.5, rng);
-	const CameraPoseFit pose = refined(object, pixels, truth);
+	const auto [object, pixels, pose] = sight(30, 0.5, 0, 6.0, 30 * kDeg, 0.5, 3);
 	const auto other = competingPose(object, pixels, kK, pose);
 	ASSERT_TRUE(other.has_value());
 	// The mirror image of the viewing direction about the line of sight,
@@ -90,54 +105,36 @@ TEST(PoseAmbiguity, AFarPlaneHasAMirroredPoseThatReprojectsAsWell)
 TEST(PoseAmbiguity, AFarSurfaceWithReliefIsAmbiguousToo)
 {
 	// Not coplanar, which IPPE alone refuses: 2 cm of relief on 0.5 m.
-	std::mt19937 rng(7);
-	const auto object = squarePoints(30, 0.5, 0.02, rng);
-	const CameraPoseFit truth = cameraLookingAtOrigin(6.0, -25 * kDeg);
-	const auto pixels = noisyPixels(object, truth, 0.5, rng);
-	const CameraPoseFit pose = refined(object, pixels, truth);
+	const auto [object, pixels, pose] = sight(30, 0.5, 0.02, 6.0, -25 * kDeg, 0.5, 7);
 	const auto other = competingPose(object, pixels, kK, pose);
 	ASSERT_TRUE(other.has_value());
 	EXPECT_NEAR(viewingAngle(*other), 25 * kDeg, 10 * kDeg);
 	EXPECT_LT(std::abs(reprojectionCostGap(pose, *other, object.size())), 9.0);
 }
 
-TEST(PoseAmbiguity, ANearWidePlaneIsNotAmbiguous)
+TEST(PoseAmbiguity, ANearWidePlaneAndPointsInDepthAreNotAmbiguous)
 {
-	std::mt19937 rng(4);
-	const auto object = squarePoints(30, 2.0, 0, rng);
-	const CameraPoseFit truth = cameraLookingAtOrigin(2.0, 30 * kDeg);
-	const auto pixels = noisyPixels(object, truth, 0.5, rng);
-	const CameraPoseFit pose = refined(object, pixels, truth);
-	const auto other = competingPose(object, pixels, kK, pose);
-	// Either every seed converges to the pose, or the other minimum is far worse.
-	if (other)
+	struct Case
 	{
-		EXPECT_GT(reprojectionCostGap(pose, *other, object.size()), 100.0);
-	}
-}
-
-TEST(PoseAmbiguity, PointsInDepthAreNotAmbiguous)
-{
-	std::mt19937 rng(5);
-	const auto object = squarePoints(30, 1.0, 0.5, rng);
-	const CameraPoseFit truth = cameraLookingAtOrigin(3.0, 30 * kDeg);
-	const auto pixels = noisyPixels(object, truth, 0.5, rng);
-	const CameraPoseFit pose = refined(object, pixels, truth);
-	const auto other = competingPose(object, pixels, kK, pose);
-	// Either every seed converges to the pose, or the other minimum is far worse.
-	if (other)
+		const char* name;
+		double size, relief, distance;
+		uint32_t seed;
+	};
+	for (const Case& c : {Case{"near wide plane", 2.0, 0, 2.0, 4}, Case{"points in depth", 1.0, 0.5, 3.0, 5}})
 	{
-		EXPECT_GT(reprojectionCostGap(pose, *other, object.size()), 100.0);
+		const auto [object, pixels, pose] = sight(30, c.size, c.relief, c.distance, 30 * kDeg, 0.5, c.seed);
+		const auto other = competingPose(object, pixels, kK, pose);
+		// Either every seed converges to the pose, or the other minimum is far worse.
+		if (other)
+		{
+			EXPECT_GT(reprojectionCostGap(pose, *other, object.size()), 100.0) << c.name;
+		}
 	}
 }
 
 TEST(PoseAmbiguity, FromTheWrongBranchTheTruthIsTheCompetitorAndTheGapIsNegative)
 {
-	std::mt19937 rng(6);
-	const auto object = squarePoints(40, 0.8, 0, rng);
-	const CameraPoseFit truth = cameraLookingAtOrigin(4.0, 40 * kDeg);
-	const auto pixels = noisyPixels(object, truth, 0.3, rng);
-	const CameraPoseFit pose = refined(object, pixels, truth);
+	const auto [object, pixels, pose] = sight(40, 0.8, 0, 4.0, 40 * kDeg, 0.3, 6);
 	const auto wrong = competingPose(object, pixels, kK, pose);
 	ASSERT_TRUE(wrong.has_value());
 	const auto back = competingPose(object, pixels, kK, *wrong);
