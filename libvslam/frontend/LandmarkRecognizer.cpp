@@ -136,15 +136,15 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(sq / n);
 	m.matches = static_cast<int>(matches.size());
+	std::vector<cv::Point3f> inlierObject;
+	std::vector<cv::Point2f> inlierPixels;
+	for (int i : refinedInliers)
+	{
+		inlierObject.push_back(object[i]);
+		inlierPixels.push_back(pixels[i]);
+	}
 	if (o.recognition_ambiguity_min_gap > 0)
 	{
-		std::vector<cv::Point3f> inlierObject;
-		std::vector<cv::Point2f> inlierPixels;
-		for (int i : refinedInliers)
-		{
-			inlierObject.push_back(object[i]);
-			inlierPixels.push_back(pixels[i]);
-		}
 		const CameraPoseFit pose{cv::Vec3d(rvec), cv::Vec3d(tvec), m.ProjErrRMS};
 		if (const auto other = competingPose(inlierObject, inlierPixels, image.camera.K(), pose))
 			m.ambiguityGap = reprojectionCostGap(pose, *other, inlierObject.size());
@@ -154,8 +154,6 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	// Predicted uncertainty: pose covariance sigma^2 (J^T J)^-1 of the
 	// inliers' reprojection (sigma: their RMS error, at least 0.5 px),
 	// carried to (dx, dy, dtheta) by a numerical Jacobian.
-	std::vector<cv::Point3f> inlierObject;
-	for (int i : refinedInliers) inlierObject.push_back(object[i]);
 	cv::Mat jacobian;
 	std::vector<cv::Point2f> unused;
 	cv::projectPoints(inlierObject, rvec, tvec, K, cv::noArray(), unused, jacobian);
