@@ -242,6 +242,10 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	}
 	m_odometry.reset();
 
+	// The first landmark fixes the map's frame: see anchorMapFrame().
+	const bool createsFirstLandmark =
+		m_index.size() == 0 && (!firstSightings.empty() || !frame.creations.empty());
+	if (createsFirstLandmark && m_options.landmarks.anchor_first_landmark) anchorMapFrame();
 	// New landmarks start from each particle's own (new) pose.
 	for (const auto* m : firstSightings)
 	{
@@ -466,6 +470,23 @@ void CVSlamParticleFilter::createLandmark(
 		p.d.bank.push_back(model.initialize(p.d.pose, rel, cloud ? &*cloud : nullptr));
 }
 
+void CVSlamParticleFilter::anchorMapFrame()
+{
+	// With no landmark yet, no measurement has weighed the particles: their
+	// spread is the odometry's alone, and it is the spread of the frame the
+	// map is about to be built in. Nothing seen later can tell those frames
+	// apart (each particle's map is consistent with its own), so resampling
+	// would keep one at random and the whole map would take its error. The
+	// cloud's mean is the best estimate of that frame: every particle takes
+	// it, and the first landmark is placed from there.
+	const se2::Pose mean = cloudMean(normalizedLinearWeights());
+	for (auto& p : m_particles)
+	{
+		p.d.pose = mean;
+		p.log_w = 0;
+	}
+}
+
 void CVSlamParticleFilter::reinitializeLandmark(
 	size_t slot, const LandmarkMeasurement& m, mrpt::Clock::time_point t)
 {
@@ -514,9 +535,8 @@ se2::Pose CVSlamParticleFilter::meanPose() const
 	return {x, y, std::atan2(s, c)};
 }
 
-Eigen::Matrix3d CVSlamParticleFilter::poseCovariance() const
+se2::Pose CVSlamParticleFilter::cloudMean(const std::vector<double>& w) const
 {
-	const std::vector<double> w = normalizedLinearWeights();
 	se2::Pose mean{0, 0, 0};
 	double c = 0, s = 0;
 	for (size_t i = 0; i < w.size(); i++)
@@ -527,6 +547,13 @@ Eigen::Matrix3d CVSlamParticleFilter::poseCovariance() const
 		s += w[i] * std::sin(m_particles[i].d.pose.phi);
 	}
 	mean.phi = std::atan2(s, c);
+	return mean;
+}
+
+Eigen::Matrix3d CVSlamParticleFilter::poseCovariance() const
+{
+	const std::vector<double> w = normalizedLinearWeights();
+	const se2::Pose mean = cloudMean(w);
 	Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
 	for (size_t i = 0; i < w.size(); i++)
 	{

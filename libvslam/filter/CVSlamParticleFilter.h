@@ -182,6 +182,11 @@ class CVSlamParticleFilter
 	void reinitializeLandmark(
 		size_t slot, const LandmarkMeasurement& m, mrpt::Clock::time_point t);
 	std::vector<double> normalizedLinearWeights() const;
+	/** Weighted mean of the particles' current poses (circular in phi). */
+	se2::Pose cloudMean(const std::vector<double>& normalizedWeights) const;
+	/** Collapses the cloud onto its mean before the first landmark is
+	 * created ([vslam_landmarks] anchor_first_landmark). */
+	void anchorMapFrame();
 };
 
 }  // namespace vslam

@@ -181,6 +181,7 @@ TEST(CVSlamParticleFilter, NewLandmarksStartFromEachParticlesOwnPose)
 	o.pf.initial_std_phi = 0.3;
 	o.landmarks.init_std_xy = 0.01;
 	o.landmarks.init_include_pose_uncertainty = false;
+	o.landmarks.anchor_first_landmark = false;
 	mrpt::random::getRandomGenerator().randomize(6);
 	CVSlamParticleFilter f(o);
 	f.processFrame(frame(0, {}, {creation(42)}));
@@ -194,10 +195,42 @@ TEST(CVSlamParticleFilter, NewLandmarksStartFromEachParticlesOwnPose)
 	EXPECT_EQ(f.stats().landmarksCreated, 1u);
 }
 
+TEST(CVSlamParticleFilter, TheFirstLandmarkAnchorsTheMapAtTheCloudsMean)
+{
+	auto o = manyParticles(500);
+	o.pf.initial_std_xy = 0.3;
+	o.pf.initial_std_phi = 0.2;
+	o.motion.slip_probability = 0;
+	o.landmarks.anchor_first_landmark = true;
+	mrpt::random::getRandomGenerator().randomize(8);
+	CVSlamParticleFilter f(o);
+	// No odometry pending: the mean is that of the initial cloud.
+	const Eigen::Vector3d before = se2::toVector(f.meanPose());
+	ASSERT_GT(f.poseCovariance()(2, 2), 0.02);  // a real spread to collapse
+	f.processFrame(frame(1, {}, {creation(1)}));
+	Eigen::Vector3d after;
+	Eigen::Matrix3d spread;
+	weightedMoments(f, after, spread);
+	EXPECT_TRUE(after.isApprox(before, 1e-9)) << after.transpose() << " vs " << before.transpose();
+	EXPECT_LT(spread.norm(), 1e-18);
+	for (size_t i = 0; i < f.particlesCount(); i++)
+		EXPECT_TRUE(f.particle(i).bank[0].mean.isApprox(after, 1e-9));
+
+	// Later landmarks start from each particle's own pose again.
+	for (int i = 0; i < 50; i++) f.addOdometryIncrement({0.02, 0, 0.01});
+	f.processFrame(frame(2, {}, {creation(2)}));
+	weightedMoments(f, after, spread);
+	EXPECT_GT(spread(2, 2), 1e-4);
+	for (size_t i = 0; i < f.particlesCount(); i++)
+		EXPECT_TRUE(f.particle(i).bank[1].mean.isApprox(se2::toVector(f.particle(i).pose), 1e-12));
+}
+
 TEST(CVSlamParticleFilter, NewLandmarksCarryThePoseUncertaintyOfTheCloud)
 {
 	auto o = manyParticles(2000);
 	o.pf.initial_std_xy = 0.3;
+	o.landmarks.init_include_pose_uncertainty = true;
+	o.landmarks.anchor_first_landmark = false;
 	mrpt::random::getRandomGenerator().randomize(6);
 	CVSlamParticleFilter f(o);
 	const Eigen::Matrix3d cloud = f.poseCovariance();
@@ -214,6 +247,7 @@ TEST(CVSlamParticleFilter, OdometryIsSampledOncePerAccumulatedIncrement)
 	// accumulated model covariance, not more.
 	auto o = manyParticles(20000);
 	o.motion.slip_probability = 0;
+	o.landmarks.anchor_first_landmark = false;  // keep the sampled cloud
 	mrpt::random::getRandomGenerator().randomize(7);
 	CVSlamParticleFilter f(o);
 	for (int i = 0; i < 100; i++) f.addOdometryIncrement({0.01, 0, 0.005});

@@ -77,6 +77,7 @@ void TLandmarkOptions::loadFromConfigFile(
 		Range::closed(0, 1e6)));
 	init_include_pose_uncertainty =
 		readBool(c, s, "init_include_pose_uncertainty", init_include_pose_uncertainty);
+	anchor_first_landmark = readBool(c, s, "anchor_first_landmark", anchor_first_landmark);
 }
 
 void TLandmarkOptions::saveToConfigFile(
@@ -90,6 +91,8 @@ void TLandmarkOptions::saveToConfigFile(
 		"Re-initialize a landmark after this many consecutive unexplained measurements while localized (0: never)");
 	c.write(s, "init_include_pose_uncertainty", init_include_pose_uncertainty, 25, 12,
 		"Add the particle cloud's pose covariance to a new landmark's covariance");
+	c.write(s, "anchor_first_landmark", anchor_first_landmark, 25, 12,
+		"Collapse the particle cloud onto its mean when the first landmark is created (fixes the map frame)");
 }
 
 void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)

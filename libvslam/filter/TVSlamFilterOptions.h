@@ -68,12 +68,20 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 	 * that no particle explains while the robot is localized (0: never). */
 	uint32_t reinit_after_unexplained = 3;
 	/** Add the particle cloud's pose covariance at creation (propagated to
-	 * the landmark) to a new landmark's covariance. Resampling soon loses
-	 * the path diversity that FastSLAM relies on to represent where the
-	 * robot was when it placed a landmark; this keeps that uncertainty in
-	 * the landmark, so a later sighting from a well-localized pose corrects
-	 * the landmark instead of pulling the robot. */
-	bool init_include_pose_uncertainty = true;
+	 * the landmark) to a new landmark's covariance. Off (FastSLAM proper):
+	 * the particles' own poses already represent where the robot was, and a
+	 * landmark widened by the cloud absorbs the loop closures that should
+	 * tell good particles from bad ones (doc/results.md 9.10). On: the
+	 * uncertainty survives resampling's loss of path diversity in the
+	 * landmark, so a later sighting corrects the landmark instead of pulling
+	 * the robot. */
+	bool init_include_pose_uncertainty = false;
+	/** Before the first landmark is created, collapse the particle cloud
+	 * onto its weighted mean, so the map's frame is the best estimate of the
+	 * robot's pose at that time instead of the pose of whichever particle's
+	 * lineage resampling happens to keep (the map's frame is unobservable
+	 * afterwards). No effect with a prior map. */
+	bool anchor_first_landmark = true;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& cfg,
