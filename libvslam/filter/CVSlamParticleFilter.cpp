@@ -520,13 +520,16 @@ std::vector<double> CVSlamParticleFilter::normalizedLinearWeights() const
 	return w;
 }
 
-se2::Pose CVSlamParticleFilter::meanPose() const
+namespace
 {
-	const std::vector<double> w = normalizedLinearWeights();
+/** Weighted mean of poseOf(0 .. w.size()-1), circular in phi. */
+template <typename PoseOf>
+se2::Pose weightedMean(const std::vector<double>& w, PoseOf poseOf)
+{
 	double x = 0, y = 0, c = 0, s = 0;
 	for (size_t i = 0; i < w.size(); i++)
 	{
-		const se2::Pose q = se2::compose(m_particles[i].d.pose, m_odometry.mean());
+		const se2::Pose q = poseOf(i);
 		x += w[i] * q.x;
 		y += w[i] * q.y;
 		c += w[i] * std::cos(q.phi);
@@ -534,20 +537,18 @@ se2::Pose CVSlamParticleFilter::meanPose() const
 	}
 	return {x, y, std::atan2(s, c)};
 }
+}  // namespace
+
+se2::Pose CVSlamParticleFilter::meanPose() const
+{
+	return weightedMean(normalizedLinearWeights(), [&](size_t i) {
+		return se2::compose(m_particles[i].d.pose, m_odometry.mean());
+	});
+}
 
 se2::Pose CVSlamParticleFilter::cloudMean(const std::vector<double>& w) const
 {
-	se2::Pose mean{0, 0, 0};
-	double c = 0, s = 0;
-	for (size_t i = 0; i < w.size(); i++)
-	{
-		mean.x += w[i] * m_particles[i].d.pose.x;
-		mean.y += w[i] * m_particles[i].d.pose.y;
-		c += w[i] * std::cos(m_particles[i].d.pose.phi);
-		s += w[i] * std::sin(m_particles[i].d.pose.phi);
-	}
-	mean.phi = std::atan2(s, c);
-	return mean;
+	return weightedMean(w, [&](size_t i) { return m_particles[i].d.pose; });
 }
 
 Eigen::Matrix3d CVSlamParticleFilter::poseCovariance() const
