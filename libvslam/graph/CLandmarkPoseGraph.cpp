@@ -1,0 +1,152 @@
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/graph/CLandmarkPoseGraph.h>
+#include <libvslam/models/ChiSquare.h>
+
+#include <Eigen/LU>
+#include <stdexcept>
+
+using namespace vslam;
+using namespace vslam::config;
+
+namespace
+{
+/** Variance standing in for "no information" after a kidnap [m^2], [rad^2]. */
+constexpr double kLostOdometryVarXY = 1e2;
+constexpr double kLostOdometryVarPhi = 10;
+/** Keeps a near-singular covariance (a robot standing still) invertible. */
+constexpr double kCovarianceFloor = 1e-6;
+}  // namespace
+
+void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	enabled = readBool(c, s, "enabled", enabled);
+	min_gap_s = readDouble(c, s, "min_gap_s", min_gap_s, Range::nonNegative());
+	edge_gate_probability = readDouble(
+		c, s, "edge_gate_probability", edge_gate_probability, Range{0, 1, false, false});
+	max_iterations = static_cast<uint32_t>(
+		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
+}
+
+void CLandmarkPoseGraph::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "enabled", enabled, 25, 12,
+		"Optimize the pose graph of the run on loop closures and move the particles onto it");
+	c.write(s, "min_gap_s", min_gap_s, 25, 12,
+		"A landmark measured again after this long [s] closes a loop");
+	c.write(s, "edge_gate_probability", edge_gate_probability, 25, 12,
+		"Chi-square gate that keeps a measurement edge after an optimization");
+	c.write(s, "max_iterations", static_cast<int>(max_iterations), 25, 12,
+		"Levenberg-Marquardt iterations per optimization");
+}
+
+CLandmarkPoseGraph::CLandmarkPoseGraph(const TOptions& options, const se2::Pose& start)
+	: m_options(options), m_nodes{start}
+{
+}
+
+void CLandmarkPoseGraph::addOdometry(const se2::Pose& u, const Eigen::Matrix3d& cov)
+{
+	m_odometry.add(u, cov);
+}
+
+void CLandmarkPoseGraph::loseOdometry() { m_odometryLost = true; }
+
+size_t CLandmarkPoseGraph::addNode(const se2::Pose& guess)
+{
+	m_nodes.push_back(guess);
+	return m_nodes.size() - 1;
+}
+
+void CLandmarkPoseGraph::addEdge(
+	size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, bool gated)
+{
+	PoseGraphEdge e;
+	e.from = from;
+	e.to = to;
+	e.z = z;
+	e.information = (cov + kCovarianceFloor * Eigen::Matrix3d::Identity()).inverse();
+	m_edges.push_back(e);
+	m_gated.push_back(gated);
+}
+
+void CLandmarkPoseGraph::addKeyframe(mrpt::Clock::time_point t, const se2::Pose& guess)
+{
+	const size_t node = addNode(guess);
+	Eigen::Matrix3d cov = m_odometry.cov();
+	if (m_odometryLost)
+		cov = Eigen::Vector3d(kLostOdometryVarXY, kLostOdometryVarXY, kLostOdometryVarPhi)
+				  .asDiagonal();
+	addEdge(m_lastKeyframeNode, node, m_odometry.mean(), cov, false);
+	m_odometry.reset();
+	m_odometryLost = false;
+	m_lastKeyframeNode = node;
+	m_keyframe = t;
+	m_keyframeNodes.emplace_back(t, node);
+}
+
+std::vector<std::pair<mrpt::Clock::time_point, se2::Pose>> CLandmarkPoseGraph::keyframePath() const
+{
+	std::vector<std::pair<mrpt::Clock::time_point, se2::Pose>> path;
+	path.reserve(m_keyframeNodes.size());
+	for (const auto& [t, node] : m_keyframeNodes) path.emplace_back(t, m_nodes[node]);
+	return path;
+}
+
+void CLandmarkPoseGraph::placeLandmark(size_t slot, const LandmarkMeasurement& m)
+{
+	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: landmark before any keyframe");
+	const se2::Pose z{m.z[0], m.z[1], m.z[2]};
+	const size_t node = addNode(se2::compose(m_nodes[m_lastKeyframeNode], z));
+	addEdge(m_lastKeyframeNode, node, z, Eigen::Matrix3d(m.R), false);
+	m_landmarks[slot] = {node, *m_keyframe};
+}
+
+bool CLandmarkPoseGraph::addMeasurement(size_t slot, const LandmarkMeasurement& m)
+{
+	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: measurement before any keyframe");
+	auto& landmark = m_landmarks.at(slot);
+	addEdge(m_lastKeyframeNode, landmark.node, {m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R), true);
+	const double gap = std::chrono::duration<double>(*m_keyframe - landmark.lastSeen).count();
+	landmark.lastSeen = *m_keyframe;
+	return gap >= m_options.min_gap_s;
+}
+
+bool CLandmarkPoseGraph::rejectWorstOutlier()
+{
+	const double gate = chiSquareQuantile(m_options.edge_gate_probability, 3);
+	std::optional<size_t> worst;
+	double worstChi2 = gate;
+	for (size_t k = 0; k < m_edges.size(); k++)
+	{
+		if (!m_gated[k]) continue;
+		const double chi2 = poseGraphChi2(m_nodes, m_edges[k]);
+		if (chi2 > worstChi2) worst = k, worstChi2 = chi2;
+	}
+	if (!worst) return false;
+	m_edges.erase(m_edges.begin() + static_cast<long>(*worst));
+	m_gated.erase(m_gated.begin() + static_cast<long>(*worst));
+	return true;
+}
+
+CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
+{
+	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: optimize before any keyframe");
+	Correction out;
+	// Optimize, drop the measurement the solution explains worst if it is
+	// outside the gate, optimize again. One at a time: while an outlier is
+	// in, it pulls its neighbours' edges out of the gate too.
+	constexpr size_t kMaxRejectionsPerOptimization = 10;
+	for (;;)
+	{
+		out.chi2 = solvePoseGraph(m_nodes, m_edges, 0, m_options.max_iterations).finalCost;
+		if (out.rejectedEdges == kMaxRejectionsPerOptimization || !rejectWorstOutlier()) break;
+		out.rejectedEdges++;
+	}
+	out.keyframe = m_nodes[m_lastKeyframeNode];
+	out.landmarks.reserve(m_landmarks.size());
+	for (const auto& [slot, landmark] : m_landmarks)
+		out.landmarks.emplace_back(slot, m_nodes[landmark.node]);
+	return out;
+}

@@ -1,0 +1,135 @@
+#pragma once
+/** \file CLandmarkPoseGraph.h
+ * The loop-closure back-end: the whole run as a pose graph, optimized when a
+ * loop closes, so the particle filter can continue on a straightened map.
+ *
+ * A visual landmark is a frame (the robot pose it was created at) and its
+ * measurement is that frame in the robot frame: a relative pose. With the
+ * front-end's landmark IDs the data association is known, so the run is a
+ * graph of SE(2) nodes (keyframes = robot poses of frames that measured a
+ * landmark, and landmarks) joined by odometry edges between consecutive
+ * keyframes and by one edge per measurement. The particle filter alone keeps
+ * the error of a map built while no older landmark was in view: every
+ * particle's map is consistent with its own path, resampling keeps a single
+ * lineage, and a loop closure can then only pull the robot back and forth
+ * between the old and the new part of the map. The graph's least-squares
+ * solution (PoseGraphSolver.h) spreads that error over the loop.
+ *
+ * Gauge: the start pose (node 0) is fixed, as the filter's initial pose is.
+ * Outliers: after an optimization, the measurement edge with the largest
+ * chi-square is removed for good if it exceeds a gate, and the graph is
+ * optimized again (up to 10 times).
+ * Only pose landmarks take part; point (range-bearing) landmarks do not.
+ */
+#include <libvslam/graph/PoseGraphSolver.h>
+#include <libvslam/models/COdometryAccumulator.h>
+#include <libvslam/models/LandmarkTypes.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/system/datetime.h>
+
+#include <optional>
+#include <map>
+#include <vector>
+
+namespace vslam
+{
+class CLandmarkPoseGraph
+{
+   public:
+	/** [vslam_loop_closure] */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_loop_closure";
+		/** Build the graph and correct the filter on loop closures. */
+		bool enabled = true;
+		/** A measurement closes a loop when its landmark was last measured
+		 * (or created) at least this long ago [s]. */
+		double min_gap_s = 20;
+		/** Probability mass of the chi-square gate that keeps a measurement
+		 * edge after an optimization, (0,1). */
+		double edge_gate_probability = 0.999;
+		/** Levenberg-Marquardt iterations per optimization. */
+		uint32_t max_iterations = 50;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) const override;
+	};
+
+	/** The optimized poses the filter moves to. */
+	struct Correction
+	{
+		/** The latest keyframe (the robot pose of the current frame). */
+		se2::Pose keyframe{0, 0, 0};
+		/** Every landmark slot in the graph, with its pose. */
+		std::vector<std::pair<size_t, se2::Pose>> landmarks;
+		/** Measurement edges removed by the gate in this optimization. */
+		size_t rejectedEdges = 0;
+		/** Sum of the chi-square errors after the optimization. */
+		double chi2 = 0;
+	};
+
+	CLandmarkPoseGraph(const TOptions& options, const se2::Pose& start);
+
+	/** Odometry since the last call (mean and covariance in its start frame). */
+	void addOdometry(const se2::Pose& u, const Eigen::Matrix3d& cov);
+	/** The odometry since the last keyframe says nothing (kidnap): the next
+	 * keyframe is tied to the previous one only by a very weak edge. */
+	void loseOdometry();
+
+	/** Starts a keyframe at time t with the filter's pose as first guess,
+	 * joined to the previous keyframe by the odometry since then. */
+	void addKeyframe(mrpt::Clock::time_point t, const se2::Pose& guess);
+	bool hasKeyframe() const { return m_keyframe.has_value(); }
+
+	/** A landmark created (or re-created) in slot from the current keyframe:
+	 * a new node, whose pose in the keyframe is m.z with covariance m.R.
+	 * A re-created slot leaves its old node and edges behind. */
+	void placeLandmark(size_t slot, const LandmarkMeasurement& m);
+	/** A measurement of the landmark in slot from the current keyframe.
+	 * Returns true if it closes a loop (see TOptions::min_gap_s). */
+	bool addMeasurement(size_t slot, const LandmarkMeasurement& m);
+	bool hasLandmark(size_t slot) const { return m_landmarks.count(slot) > 0; }
+
+	/** Optimizes the whole graph (start pose fixed), drops measurement edges
+	 * outside the gate and optimizes again. Needs a keyframe. */
+	Correction optimize();
+
+	/** Every keyframe's time and current pose (after optimize(): the
+	 * smoothed path of the whole run). */
+	std::vector<std::pair<mrpt::Clock::time_point, se2::Pose>> keyframePath() const;
+
+	size_t keyframes() const { return m_keyframeNodes.size(); }
+	size_t edges() const { return m_edges.size(); }
+
+   private:
+	struct LandmarkNode
+	{
+		size_t node;
+		mrpt::Clock::time_point lastSeen;
+	};
+
+	TOptions m_options;
+	/** Node 0 is the start pose (fixed); then keyframes and landmarks. */
+	std::vector<se2::Pose> m_nodes;
+	std::vector<PoseGraphEdge> m_edges;
+	/** Per edge: a measurement the gate may remove (not odometry, not a
+	 * landmark's creation). */
+	std::vector<bool> m_gated;
+	size_t m_lastKeyframeNode = 0;
+	std::optional<mrpt::Clock::time_point> m_keyframe;
+	COdometryAccumulator m_odometry;
+	bool m_odometryLost = false;
+	std::vector<std::pair<mrpt::Clock::time_point, size_t>> m_keyframeNodes;
+	std::map<size_t, LandmarkNode> m_landmarks;
+
+	size_t addNode(const se2::Pose& guess);
+	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, bool gated);
+	/** Removes the gated edge with the largest chi-square if it exceeds the
+	 * gate; false if there is none. */
+	bool rejectWorstOutlier();
+};
+}  // namespace vslam

@@ -1,0 +1,183 @@
+#include <gtest/gtest.h>
+#include <libvslam/graph/CLandmarkPoseGraph.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <cmath>
+
+using namespace vslam;
+
+namespace
+{
+using Clock = mrpt::Clock;
+
+Clock::time_point at(double s)
+{
+	return Clock::time_point() + std::chrono::microseconds(static_cast<int64_t>(s * 1e6));
+}
+
+LandmarkMeasurement measurement(const se2::Pose& robot, const se2::Pose& landmark, double stdXY,
+	double stdPhi)
+{
+	LandmarkMeasurement m;
+	const se2::Pose z = se2::between(robot, landmark);
+	m.z = VecN(3);
+	m.z << z.x, z.y, z.phi;
+	m.R = MatN::Zero(3, 3);
+	m.R.diagonal() << stdXY * stdXY, stdXY * stdXY, stdPhi * stdPhi;
+	return m;
+}
+
+double positionError(const se2::Pose& a, const se2::Pose& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+/** A robot drives around a 4 m x 4 m square (1 m steps, turning 90 deg at
+ * the corners) whose odometry reports 4 deg too little per turn. At every
+ * corner it creates a landmark where it stands; at the end it measures the
+ * first landmark again. The guess handed to the graph is dead reckoning. */
+struct SquareRun
+{
+	CLandmarkPoseGraph graph;
+	se2::Pose truth{0, 0, 0}, deadReckoning{0, 0, 0};
+	std::vector<se2::Pose> trueLandmarks;
+	double t = 0;
+	bool closedLoop = false;
+
+	explicit SquareRun(const CLandmarkPoseGraph::TOptions& o) : graph(o, {0, 0, 0}) {}
+
+	void step(const se2::Pose& trueIncrement, const se2::Pose& reportedIncrement)
+	{
+		truth = se2::compose(truth, trueIncrement);
+		deadReckoning = se2::compose(deadReckoning, reportedIncrement);
+		Eigen::Matrix3d cov = Eigen::Vector3d(0.01 * 0.01, 0.01 * 0.01, std::pow(2.0 * M_PI / 180, 2))
+								  .asDiagonal();
+		graph.addOdometry(reportedIncrement, cov);
+		t += 5;
+		graph.addKeyframe(at(t), deadReckoning);
+	}
+
+	void run()
+	{
+		const double turnError = 4 * M_PI / 180;
+		graph.addKeyframe(at(0), truth);
+		graph.placeLandmark(0, measurement(truth, truth, 0.01, 0.01));
+		trueLandmarks.push_back(truth);
+		for (int side = 0; side < 4; side++)
+		{
+			for (int k = 0; k < 4; k++) step({1, 0, 0}, {1, 0, 0});
+			step({0, 0, M_PI / 2}, {0, 0, M_PI / 2 - turnError});
+			if (side < 3)
+			{
+				graph.placeLandmark(side + 1, measurement(truth, truth, 0.01, 0.01));
+				trueLandmarks.push_back(truth);
+			}
+		}
+		closedLoop = graph.addMeasurement(0, measurement(truth, trueLandmarks[0], 0.01, 0.01));
+	}
+};
+}  // namespace
+
+TEST(CLandmarkPoseGraph, ALoopClosureStraightensTheSquare)
+{
+	SquareRun run{CLandmarkPoseGraph::TOptions()};
+	run.run();
+	EXPECT_TRUE(run.closedLoop);
+	// Dead reckoning is 16 deg and 0.8 m off at the end.
+	ASSERT_GT(positionError(run.deadReckoning, run.truth), 0.5);
+	const auto c = run.graph.optimize();
+	EXPECT_EQ(c.rejectedEdges, 0u);
+	// The last keyframe sees the first landmark (5 cm from it, 1 cm
+	// measurement noise), so it ends up next to the truth.
+	EXPECT_LT(positionError(c.keyframe, run.truth), 0.05);
+	EXPECT_LT(std::abs(se2::wrap(c.keyframe.phi - run.truth.phi)), 1.0 * M_PI / 180);
+	// The landmarks are corrected along the loop: the error that was up to
+	// 12 deg of heading is spread over 4 turns.
+	ASSERT_EQ(c.landmarks.size(), 4u);
+	for (const auto& [slot, pose] : c.landmarks)
+	{
+		EXPECT_LT(positionError(pose, run.trueLandmarks.at(slot)), 0.5) << "slot " << slot;
+		EXPECT_LT(std::abs(se2::wrap(pose.phi - run.trueLandmarks.at(slot).phi)), 4.0 * M_PI / 180)
+			<< "slot " << slot;
+	}
+	// Slot 2 (the far corner) was 8 deg off in dead reckoning; the loop
+	// halves that at least.
+	const auto& far = c.landmarks.at(2).second;
+	EXPECT_LT(std::abs(se2::wrap(far.phi - run.trueLandmarks[2].phi)), 4.0 * M_PI / 180);
+}
+
+TEST(CLandmarkPoseGraph, AMeasurementClosesALoopOnlyAfterTheGap)
+{
+	CLandmarkPoseGraph::TOptions o;
+	o.min_gap_s = 20;
+	CLandmarkPoseGraph graph(o, {0, 0, 0});
+	graph.addKeyframe(at(0), {0, 0, 0});
+	graph.placeLandmark(7, measurement({0, 0, 0}, {1, 0, 0}, 0.01, 0.01));
+	EXPECT_TRUE(graph.hasLandmark(7));
+	EXPECT_FALSE(graph.hasLandmark(8));
+	graph.addKeyframe(at(10), {0, 0, 0});
+	EXPECT_FALSE(graph.addMeasurement(7, measurement({0, 0, 0}, {1, 0, 0}, 0.01, 0.01)));
+	graph.addKeyframe(at(25), {0, 0, 0});
+	EXPECT_FALSE(graph.addMeasurement(7, measurement({0, 0, 0}, {1, 0, 0}, 0.01, 0.01)));
+	graph.addKeyframe(at(45), {0, 0, 0});
+	EXPECT_TRUE(graph.addMeasurement(7, measurement({0, 0, 0}, {1, 0, 0}, 0.01, 0.01)));
+	EXPECT_EQ(graph.keyframes(), 4u);
+}
+
+TEST(CLandmarkPoseGraph, AWrongMeasurementIsGatedOut)
+{
+	SquareRun run{CLandmarkPoseGraph::TOptions()};
+	run.run();
+	// The robot drives on and measures landmarks 2 and 1 correctly; then,
+	// while it measures landmark 0, a false recognition of landmark 2 comes
+	// in, 1 m and 30 deg off.
+	run.step({1, 0, 0}, {1, 0, 0});
+	run.graph.addMeasurement(2, measurement(run.truth, run.trueLandmarks[2], 0.01, 0.01));
+	run.graph.addMeasurement(1, measurement(run.truth, run.trueLandmarks[1], 0.01, 0.01));
+	run.step({0.5, 0, 0}, {0.5, 0, 0});
+	run.graph.addMeasurement(0, measurement(run.truth, run.trueLandmarks[0], 0.01, 0.01));
+	LandmarkMeasurement wrong = measurement(run.truth, run.trueLandmarks[2], 0.01, 0.01);
+	wrong.z[0] += 1;
+	wrong.z[2] += 30 * M_PI / 180;
+	run.graph.addMeasurement(2, wrong);
+	const auto c = run.graph.optimize();
+	EXPECT_GE(c.rejectedEdges, 1u);
+	EXPECT_LT(positionError(c.keyframe, run.truth), 0.05);
+	EXPECT_LT(positionError(c.landmarks.at(2).second, run.trueLandmarks[2]), 0.5);
+}
+
+TEST(CLandmarkPoseGraph, LostOdometryDoesNotPullTheKeyframe)
+{
+	CLandmarkPoseGraph graph(CLandmarkPoseGraph::TOptions(), {0, 0, 0});
+	graph.addKeyframe(at(0), {0, 0, 0});
+	const se2::Pose landmark{2, 1, 0.3};
+	graph.placeLandmark(0, measurement({0, 0, 0}, landmark, 0.01, 0.01));
+	// Kidnapped: the robot is carried to (3, 3, 1) while odometry says it
+	// stood still, then it measures the landmark.
+	graph.addOdometry({0, 0, 0}, Eigen::Matrix3d::Identity() * 1e-4);
+	graph.loseOdometry();
+	graph.addKeyframe(at(30), {0, 0, 0});
+	const se2::Pose robot{3, 3, 1};
+	graph.addMeasurement(0, measurement(robot, landmark, 0.01, 0.01));
+	const auto c = graph.optimize();
+	EXPECT_EQ(c.rejectedEdges, 0u);
+	EXPECT_LT(positionError(c.keyframe, robot), 0.01);
+	EXPECT_LT(positionError(c.landmarks.at(0).second, landmark), 0.01);
+}
+
+TEST(CLandmarkPoseGraph, OptionsRoundTripThroughTheIni)
+{
+	CLandmarkPoseGraph::TOptions o;
+	o.enabled = false;
+	o.min_gap_s = 12.5;
+	o.edge_gate_probability = 0.99;
+	o.max_iterations = 7;
+	mrpt::config::CConfigFileMemory written;
+	o.saveToConfigFile(written, o.kSection);
+	std::string text;
+	written.getContent(text);
+	const mrpt::config::CConfigFileMemory ini(text);
+	CLandmarkPoseGraph::TOptions back;
+	back.loadFromConfigFile(ini, back.kSection);
+	EXPECT_EQ(back.enabled, false);
+	EXPECT_DOUBLE_EQ(back.min_gap_s, 12.5);
+	EXPECT_DOUBLE_EQ(back.edge_gate_probability, 0.99);
+	EXPECT_EQ(back.max_iterations, 7u);
+}
