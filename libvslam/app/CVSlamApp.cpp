@@ -394,6 +394,14 @@ int CVSlamApp::run()
 		if (f) std::fclose(f);
 		writeTumTrajectory(out("most_likely_path.tum"), smoothed);
 	}
+	Trajectory poseGraphPath;  // the loop-closure graph's solution at the end
+	if (const CLandmarkPoseGraph* graph = filter.loopClosureGraph(); graph && graph->keyframes() > 0)
+	{
+		CLandmarkPoseGraph solved = *graph;
+		solved.optimize();
+		for (const auto& [t, pose] : solved.keyframePath()) poseGraphPath.push_back({toSeconds(t), pose});
+		writeTumTrajectory(out("pose_graph_path.tum"), poseGraphPath);
+	}
 	if (!groundTruth.empty())
 	{
 		summary.ate = computeAte(estimated, groundTruth);
@@ -404,6 +412,7 @@ int CVSlamApp::run()
 			summary.smoothedAte = computeAte(smoothed, groundTruth);
 			summary.smoothedAteAligned = computeAte(smoothed, groundTruth, {0.5, true});
 		}
+		if (!poseGraphPath.empty()) summary.poseGraphAte = computeAte(poseGraphPath, groundTruth);
 	}
 	summary.peakMemoryMiB = peakMemoryMiB();
 	summary.write(out("run_summary.yaml"), filter);

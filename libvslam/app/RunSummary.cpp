@@ -105,6 +105,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  dual_particles_drawn: " << fs.dualParticlesDrawn << "\n"
 	  << "  unexplained_frames: " << fs.unexplainedFrames << "\n"
 	  << "  kidnaps_detected: " << fs.kidnapsDetected << "\n"
+	  << "  loop_closures: " << fs.loopClosures << "\n"
+	  << "  loop_closure_edges_rejected: " << fs.loopClosureEdgesRejected << "\n"
 	  << "timing:\n"
 	  << "  total_seconds: " << totalSeconds << "\n"
 	  << "  step_mean_ms: " << stepMeanMs << "\n"
@@ -141,6 +143,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 		writeAte(o, "vslam_se2_aligned", ateAligned);
 		writeAte(o, "most_likely_path", smoothedAte);
 		writeAte(o, "most_likely_path_se2_aligned", smoothedAteAligned);
+		writeAte(o, "pose_graph_path", poseGraphAte);
 		writeAte(o, "dead_reckoning", odometryAte);
 	}
 	FILE* out = std::fopen(file.c_str(), "wt");

@@ -26,6 +26,8 @@ struct RunSummary
 	/** The best particle's whole path at the end (most_likely_path.tum):
 	 * the path smoothed by resampling, raw and SE(2)-aligned. */
 	std::optional<AteStats> smoothedAte, smoothedAteAligned;
+	/** The loop-closure graph's keyframe path at the end (pose_graph_path.tum). */
+	std::optional<AteStats> poseGraphAte;
 
 	/** The visual front-end, when the rawlog had camera images. */
 	struct FrontEnd

@@ -53,6 +53,8 @@ void CVSlamParticleFilter::reset()
 	m_kidnap = CKidnapDetector(m_options.kidnap);
 	m_stats = TFilterStats();
 	m_lastFrame = TFrameReport();
+	m_graph.reset();
+	if (m_options.loopClosure.enabled) m_graph.emplace(m_options.loopClosure, pf.initialPose);
 }
 
 void CVSlamParticleFilter::setPriorMap(
@@ -67,6 +69,8 @@ void CVSlamParticleFilter::setPriorMap(
 		bank.push_back(estimate);
 	}
 	for (auto& p : m_particles) p.d.bank = bank;
+	// The prior map is the frame; the pose graph would let it move.
+	m_graph.reset();
 }
 
 // --------------------------------------------------------------------------
@@ -202,6 +206,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	m_lastFrame.hypothesisSupport = m_kidnap.hypothesis().support();
 
 	std::vector<std::pair<size_t, const LandmarkMeasurement*>> toReinitialize;
+	std::vector<KnownMeasurement> used;
 	if (verdict == CKidnapDetector::Verdict::Kidnapped)
 	{
 		// The hypothesis already holds this frame's evidence and motion.
@@ -215,7 +220,6 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		// slip, are outliers: not used. Landmarks placed while the robot was
 		// lost are re-initialized, and so is a landmark that keeps being
 		// unexplained while the robot is localized (it was misplaced).
-		std::vector<KnownMeasurement> used;
 		const uint32_t limit = m_options.landmarks.reinit_after_unexplained;
 		for (const auto& k : known)
 		{
@@ -240,6 +244,11 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		else
 			normalUpdate(used, mp, spreadXY, bestFraction, optimal ? &proposals : nullptr);
 	}
+	if (m_graph)
+	{
+		m_graph->addOdometry(m_odometry.mean(), m_odometry.cov());
+		if (verdict == CKidnapDetector::Verdict::Kidnapped) m_graph->loseOdometry();
+	}
 	m_odometry.reset();
 
 	// The first landmark fixes the map's frame: see anchorMapFrame().
@@ -247,12 +256,18 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		m_index.size() == 0 && (!firstSightings.empty() || !frame.creations.empty());
 	if (createsFirstLandmark && m_options.landmarks.anchor_first_landmark) anchorMapFrame();
 	// New landmarks start from each particle's own (new) pose.
+	std::vector<std::pair<size_t, LandmarkMeasurement>> placed;  // for the pose graph
 	for (const auto* m : firstSightings)
 	{
 		createLandmark(m->key, *m, frame.timestamp);
+		placed.emplace_back(m_index.size() - 1, *m);
 		m_stats.landmarksCreatedFromMeasurement++;
 	}
-	for (const auto& [slot, m] : toReinitialize) reinitializeLandmark(slot, *m, frame.timestamp);
+	for (const auto& [slot, m] : toReinitialize)
+	{
+		reinitializeLandmark(slot, *m, frame.timestamp);
+		placed.emplace_back(slot, *m);
+	}
 	const Eigen::Matrix3d initCov = Eigen::Vector3d(
 		m_options.landmarks.init_std_xy * m_options.landmarks.init_std_xy,
 		m_options.landmarks.init_std_xy * m_options.landmarks.init_std_xy,
@@ -266,13 +281,16 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		{
 			m_stats.duplicateCreations++;
 			reinitializeLandmark(*slot, rel, frame.timestamp);
+			placed.emplace_back(*slot, rel);
 		}
 		else
 		{
 			createLandmark(c.key, rel, frame.timestamp);
+			placed.emplace_back(m_index.size() - 1, rel);
 			m_stats.landmarksCreated++;
 		}
 	}
+	if (m_graph) updateLoopClosureGraph(frame.timestamp, used, placed);
 	for (auto& p : m_particles) p.d.path.push(frame.timestamp, p.d.pose);
 	m_lastFrame.essAfterUpdate = ESS();
 }
@@ -484,6 +502,52 @@ void CVSlamParticleFilter::anchorMapFrame()
 	{
 		p.d.pose = mean;
 		p.log_w = 0;
+	}
+}
+
+void CVSlamParticleFilter::updateLoopClosureGraph(
+	mrpt::Clock::time_point t, const std::vector<KnownMeasurement>& used,
+	const std::vector<std::pair<size_t, LandmarkMeasurement>>& placed)
+{
+	if (used.empty() && placed.empty()) return;
+	// The graph holds pose landmarks only; a run with point landmarks goes
+	// without it (see CLandmarkPoseGraph.h).
+	const auto isPoint = [](const LandmarkMeasurement& m) { return m.kind() == LandmarkKind::Point; };
+	if (std::any_of(used.begin(), used.end(), [&](const auto& k) { return isPoint(*k.m); }) ||
+		std::any_of(placed.begin(), placed.end(), [&](const auto& p) { return isPoint(p.second); }))
+	{
+		m_graph.reset();
+		return;
+	}
+	m_graph->addKeyframe(t, m_particles[bestParticleIndex()].d.pose);
+	bool closesLoop = false;
+	for (const auto& k : used)
+		if (m_graph->hasLandmark(k.slot)) closesLoop |= m_graph->addMeasurement(k.slot, *k.m);
+	for (const auto& [slot, m] : placed) m_graph->placeLandmark(slot, m);
+	if (closesLoop) applyLoopClosure(m_graph->optimize());
+}
+
+void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction& c)
+{
+	// Every particle takes the solution's map (with the best particle's
+	// landmark covariances), and the cloud moves rigidly so that the best
+	// particle sits on the solution's current pose: the spread and the
+	// weights stay as they are.
+	m_stats.loopClosures++;
+	m_stats.loopClosureEdgesRejected += c.rejectedEdges;
+	const CVSlamParticle& best = m_particles[bestParticleIndex()].d;
+	LandmarkBank bank = best.bank;
+	for (const auto& [slot, pose] : c.landmarks)
+	{
+		LandmarkEstimate e = bank[slot];
+		e.mean = se2::toVector(pose);
+		bank.set(slot, e);
+	}
+	const se2::Pose shift = se2::compose(c.keyframe, se2::inverse(best.pose));
+	for (auto& p : m_particles)
+	{
+		p.d.pose = se2::compose(shift, p.d.pose);
+		p.d.bank = bank;
 	}
 }
 

@@ -57,6 +57,10 @@ struct TFilterStats
 	uint64_t unexplainedFrames = 0;
 	uint64_t dualParticlesDrawn = 0;
 	uint64_t resamplings = 0;
+	/** Loop closures: optimizations of the pose graph applied to the
+	 * particles, and measurement edges its gate removed. */
+	uint64_t loopClosures = 0;
+	uint64_t loopClosureEdgesRejected = 0;
 };
 
 /** What happened in the last processed frame (for logs and plots). */
@@ -123,6 +127,8 @@ class CVSlamParticleFilter
 	const CMeasurementExtractor& extractor() const { return m_extractor; }
 	const COdometryAccumulator& pendingOdometry() const { return m_odometry; }
 	const CKidnapDetector& kidnapDetector() const { return m_kidnap; }
+	/** The loop-closure pose graph (nullptr: none, see m_graph). */
+	const CLandmarkPoseGraph* loopClosureGraph() const { return m_graph ? &*m_graph : nullptr; }
 
 	// ---- CParticleFilterCapable (overridden to avoid the per-call
 	// dynamic_cast of CParticleFilterDataImpl) ------------------------------
@@ -156,6 +162,9 @@ class CVSlamParticleFilter
 	std::vector<PoseGaussianProposal> m_proposalBuffer;  //!< reused per frame
 	mrpt::random::CRandomGenerator& m_rng;
 	std::string m_inputError;  //!< see takeInputError()
+	/** The loop-closure back-end (none: disabled, prior map, or point
+	 * landmarks in the run). */
+	std::optional<CLandmarkPoseGraph> m_graph;
 
 	void updateWithFrame(const FrameMeasurements& frame);
 	/** The frame's measurements with the timestamp-jitter noise added. */
@@ -187,6 +196,13 @@ class CVSlamParticleFilter
 	/** Collapses the cloud onto its mean before the first landmark is
 	 * created ([vslam_landmarks] anchor_first_landmark). */
 	void anchorMapFrame();
+	/** Adds the frame's keyframe, measurements and new landmarks to the
+	 * pose graph; on a loop closure, optimizes it and moves the particles
+	 * and their maps onto the solution. */
+	void updateLoopClosureGraph(
+		mrpt::Clock::time_point t, const std::vector<KnownMeasurement>& used,
+		const std::vector<std::pair<size_t, LandmarkMeasurement>>& placed);
+	void applyLoopClosure(const CLandmarkPoseGraph::Correction& c);
 };
 
 }  // namespace vslam

@@ -106,6 +106,7 @@ void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 	visual.loadFromConfigFile(c, kVisual);
 	rangeBearing.loadFromConfigFile(c, kRangeBearing);
 	prefilter.loadFromConfigFile(c, kPreFilter);
+	loopClosure.loadFromConfigFile(c, kLoopClosure);
 }
 
 void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
@@ -119,6 +120,7 @@ void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
 	visual.saveToConfigFile(c, kVisual);
 	rangeBearing.saveToConfigFile(c, kRangeBearing);
 	prefilter.saveToConfigFile(c, kPreFilter);
+	loopClosure.saveToConfigFile(c, kLoopClosure);
 }
 
 void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
@@ -132,4 +134,5 @@ void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
 	k.addFromOptions(visual, kVisual);
 	k.addFromOptions(rangeBearing, kRangeBearing);
 	k.addFromOptions(prefilter, kPreFilter);
+	k.addFromOptions(loopClosure, kLoopClosure);
 }

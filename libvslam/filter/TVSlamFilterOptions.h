@@ -12,12 +12,14 @@
  *   [vslam_visual]            visual measurement noise Sigma_vis
  *   [vslam_range_bearing]     range-bearing measurements
  *   [vslam_prefilter]         CPreFilter::TOptions
+ *   [vslam_loop_closure]      CLandmarkPoseGraph::TOptions
  */
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/filter/CKidnapDetector.h>
 #include <libvslam/filter/CMeasurementExtractor.h>
 #include <libvslam/filter/CMixtureProposal.h>
 #include <libvslam/filter/CPreFilter.h>
+#include <libvslam/graph/CLandmarkPoseGraph.h>
 #include <libvslam/models/CMotionModel.h>
 #include <libvslam/models/CRobustLikelihood.h>
 #include <mrpt/bayes/CParticleFilter.h>
@@ -102,6 +104,7 @@ struct TVSlamFilterOptions
 	static constexpr const char* kVisual = "vslam_visual";
 	static constexpr const char* kRangeBearing = "vslam_range_bearing";
 	static constexpr const char* kPreFilter = "vslam_prefilter";
+	static constexpr const char* kLoopClosure = CLandmarkPoseGraph::TOptions::kSection;
 
 	TParticleFilterOptions pf;
 	CMotionModel::TOptions motion;
@@ -112,6 +115,7 @@ struct TVSlamFilterOptions
 	CMeasurementExtractor::TVisualOptions visual;
 	CMeasurementExtractor::TRangeBearingOptions rangeBearing;
 	CPreFilter::TOptions prefilter;
+	CLandmarkPoseGraph::TOptions loopClosure;
 
 	/** Reads every section (absent keys keep their defaults). */
 	void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
