@@ -106,7 +106,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  unexplained_frames: " << fs.unexplainedFrames << "\n"
 	  << "  kidnaps_detected: " << fs.kidnapsDetected << "\n"
 	  << "  loop_closures: " << fs.loopClosures << "\n"
-	  << "  loop_closure_edges_rejected: " << fs.loopClosureEdgesRejected << "\n"
+	  << "  loop_closure_edges_left_out: " << fs.loopClosureEdgesLeftOut << "\n"
 	  << "timing:\n"
 	  << "  total_seconds: " << totalSeconds << "\n"
 	  << "  step_mean_ms: " << stepMeanMs << "\n"

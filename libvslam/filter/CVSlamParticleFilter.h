@@ -58,9 +58,9 @@ struct TFilterStats
 	uint64_t dualParticlesDrawn = 0;
 	uint64_t resamplings = 0;
 	/** Loop closures: optimizations of the pose graph applied to the
-	 * particles, and measurement edges its gate removed. */
+	 * particles, and the measurement edges the gate left out of the latest. */
 	uint64_t loopClosures = 0;
-	uint64_t loopClosureEdgesRejected = 0;
+	uint64_t loopClosureEdgesLeftOut = 0;
 };
 
 /** What happened in the last processed frame (for logs and plots). */

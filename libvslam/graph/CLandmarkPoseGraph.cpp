@@ -3,6 +3,7 @@
 #include <libvslam/models/ChiSquare.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <stdexcept>
 
 using namespace vslam;
@@ -24,6 +25,8 @@ void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
 	min_gap_s = readDouble(c, s, "min_gap_s", min_gap_s, Range::nonNegative());
 	edge_gate_probability = readDouble(
 		c, s, "edge_gate_probability", edge_gate_probability, Range{0, 1, false, false});
+	huber_threshold =
+		readDouble(c, s, "huber_threshold", huber_threshold, Range::nonNegative());
 	max_iterations = static_cast<uint32_t>(
 		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
 }
@@ -37,6 +40,8 @@ void CLandmarkPoseGraph::TOptions::saveToConfigFile(
 		"A landmark measured again after this long [s] closes a loop");
 	c.write(s, "edge_gate_probability", edge_gate_probability, 25, 12,
 		"Chi-square gate that keeps a measurement edge after an optimization");
+	c.write(s, "huber_threshold", huber_threshold, 25, 12,
+		"Huber threshold on the Mahalanobis distance of a measurement edge (0: least squares)");
 	c.write(s, "max_iterations", static_cast<int>(max_iterations), 25, 12,
 		"Levenberg-Marquardt iterations per optimization");
 }
@@ -69,6 +74,7 @@ void CLandmarkPoseGraph::addEdge(
 	e.information = (cov + kCovarianceFloor * Eigen::Matrix3d::Identity()).inverse();
 	m_edges.push_back(e);
 	m_gated.push_back(gated);
+	m_active.push_back(true);
 }
 
 void CLandmarkPoseGraph::addKeyframe(mrpt::Clock::time_point t, const se2::Pose& guess)
@@ -108,25 +114,32 @@ bool CLandmarkPoseGraph::addMeasurement(size_t slot, const LandmarkMeasurement& 
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: measurement before any keyframe");
 	auto& landmark = m_landmarks.at(slot);
 	addEdge(m_lastKeyframeNode, landmark.node, {m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R), true);
+	m_edges.back().huber = m_options.huber_threshold;
 	const double gap = std::chrono::duration<double>(*m_keyframe - landmark.lastSeen).count();
 	landmark.lastSeen = *m_keyframe;
 	return gap >= m_options.min_gap_s;
 }
 
-bool CLandmarkPoseGraph::rejectWorstOutlier()
+bool CLandmarkPoseGraph::reviseOutliers()
 {
 	const double gate = chiSquareQuantile(m_options.edge_gate_probability, 3);
+	// Bring back every edge the solution now explains ...
+	bool changed = false;
+	for (size_t k = 0; k < m_edges.size(); k++)
+		if (m_gated[k] && !m_active[k] && poseGraphChi2(m_nodes, m_edges[k]) <= gate)
+			m_active[k] = true, changed = true;
+	if (changed) return true;
+	// ... else leave out the one it explains worst, if outside the gate.
 	std::optional<size_t> worst;
 	double worstChi2 = gate;
 	for (size_t k = 0; k < m_edges.size(); k++)
 	{
-		if (!m_gated[k]) continue;
+		if (!m_gated[k] || !m_active[k]) continue;
 		const double chi2 = poseGraphChi2(m_nodes, m_edges[k]);
 		if (chi2 > worstChi2) worst = k, worstChi2 = chi2;
 	}
 	if (!worst) return false;
-	m_edges.erase(m_edges.begin() + static_cast<long>(*worst));
-	m_gated.erase(m_gated.begin() + static_cast<long>(*worst));
+	m_active[*worst] = false;
 	return true;
 }
 
@@ -134,16 +147,22 @@ CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
 {
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: optimize before any keyframe");
 	Correction out;
-	// Optimize, drop the measurement the solution explains worst if it is
-	// outside the gate, optimize again. One at a time: while an outlier is
-	// in, it pulls its neighbours' edges out of the gate too.
-	constexpr size_t kMaxRejectionsPerOptimization = 10;
-	for (;;)
+	// Solve with the edges in, revise which measurements are in, solve
+	// again. Left out one at a time, worst first: while an outlier is in,
+	// it pulls its neighbours' edges out of the gate too. Nothing is left
+	// out for good: an edge a later solution explains comes back.
+	constexpr size_t kMaxRevisions = 10;
+	std::vector<PoseGraphEdge> active;
+	for (size_t revision = 0;; revision++)
 	{
-		out.chi2 = solvePoseGraph(m_nodes, m_edges, 0, m_options.max_iterations).finalCost;
-		if (out.rejectedEdges == kMaxRejectionsPerOptimization || !rejectWorstOutlier()) break;
-		out.rejectedEdges++;
+		active.clear();
+		for (size_t k = 0; k < m_edges.size(); k++)
+			if (m_active[k]) active.push_back(m_edges[k]);
+		out.chi2 = solvePoseGraph(m_nodes, active, 0, m_options.max_iterations).finalCost;
+		if (revision == kMaxRevisions || !reviseOutliers()) break;
 	}
+	out.rejectedEdges =
+		static_cast<size_t>(std::count(m_active.begin(), m_active.end(), false));
 	out.keyframe = m_nodes[m_lastKeyframeNode];
 	out.landmarks.reserve(m_landmarks.size());
 	for (const auto& [slot, landmark] : m_landmarks)

@@ -16,9 +16,10 @@
  * solution (PoseGraphSolver.h) spreads that error over the loop.
  *
  * Gauge: the start pose (node 0) is fixed, as the filter's initial pose is.
- * Outliers: after an optimization, the measurement edge with the largest
- * chi-square is removed for good if it exceeds a gate, and the graph is
- * optimized again (up to 10 times).
+ * Outliers: after a solve, left-out measurement edges the solution explains
+ * come back, or else the one with the largest chi-square is left out if it
+ * exceeds a gate, and the graph is solved again (up to 10 revisions per
+ * optimization; nothing is left out for good).
  * Only pose landmarks take part; point (range-bearing) landmarks do not.
  */
 #include <libvslam/graph/PoseGraphSolver.h>
@@ -48,6 +49,9 @@ class CLandmarkPoseGraph
 		/** Probability mass of the chi-square gate that keeps a measurement
 		 * edge after an optimization, (0,1). */
 		double edge_gate_probability = 0.999;
+		/** Huber threshold on a measurement edge's Mahalanobis distance:
+		 * beyond it the edge's cost grows linearly (0: least squares). */
+		double huber_threshold = 0;
 		/** Levenberg-Marquardt iterations per optimization. */
 		uint32_t max_iterations = 50;
 
@@ -66,7 +70,7 @@ class CLandmarkPoseGraph
 		se2::Pose keyframe{0, 0, 0};
 		/** Every landmark slot in the graph, with its pose. */
 		std::vector<std::pair<size_t, se2::Pose>> landmarks;
-		/** Measurement edges removed by the gate in this optimization. */
+		/** Measurement edges the gate leaves out of this solution. */
 		size_t rejectedEdges = 0;
 		/** Sum of the chi-square errors after the optimization. */
 		double chi2 = 0;
@@ -116,9 +120,9 @@ class CLandmarkPoseGraph
 	/** Node 0 is the start pose (fixed); then keyframes and landmarks. */
 	std::vector<se2::Pose> m_nodes;
 	std::vector<PoseGraphEdge> m_edges;
-	/** Per edge: a measurement the gate may remove (not odometry, not a
-	 * landmark's creation). */
-	std::vector<bool> m_gated;
+	/** Per edge: a measurement the gate may leave out (not odometry, not a
+	 * landmark's creation), and whether it is in the current solution. */
+	std::vector<bool> m_gated, m_active;
 	size_t m_lastKeyframeNode = 0;
 	std::optional<mrpt::Clock::time_point> m_keyframe;
 	COdometryAccumulator m_odometry;
@@ -128,8 +132,9 @@ class CLandmarkPoseGraph
 
 	size_t addNode(const se2::Pose& guess);
 	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, bool gated);
-	/** Removes the gated edge with the largest chi-square if it exceeds the
-	 * gate; false if there is none. */
-	bool rejectWorstOutlier();
+	/** After a solve: brings back the left-out edges the solution explains,
+	 * or else leaves out the worst edge outside the gate; false if nothing
+	 * changed. */
+	bool reviseOutliers();
 };
 }  // namespace vslam

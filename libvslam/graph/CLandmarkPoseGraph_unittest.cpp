@@ -169,6 +169,7 @@ TEST(CLandmarkPoseGraph, OptionsRoundTripThroughTheIni)
 	o.min_gap_s = 12.5;
 	o.edge_gate_probability = 0.99;
 	o.max_iterations = 7;
+	o.huber_threshold = 2.5;
 	mrpt::config::CConfigFileMemory written;
 	o.saveToConfigFile(written, o.kSection);
 	std::string text;
@@ -180,4 +181,5 @@ TEST(CLandmarkPoseGraph, OptionsRoundTripThroughTheIni)
 	EXPECT_DOUBLE_EQ(back.min_gap_s, 12.5);
 	EXPECT_DOUBLE_EQ(back.edge_gate_probability, 0.99);
 	EXPECT_EQ(back.max_iterations, 7u);
+	EXPECT_DOUBLE_EQ(back.huber_threshold, 2.5);
 }

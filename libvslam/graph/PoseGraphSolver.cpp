@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <cmath>
 
 using namespace vslam;
 
@@ -17,12 +18,19 @@ double vslam::poseGraphChi2(const std::vector<se2::Pose>& nodes, const PoseGraph
 	return r.dot(e.information * r);
 }
 
+double vslam::poseGraphCost(const std::vector<se2::Pose>& nodes, const PoseGraphEdge& e)
+{
+	const double chi2 = poseGraphChi2(nodes, e);
+	if (e.huber <= 0 || chi2 <= e.huber * e.huber) return chi2;
+	return 2 * e.huber * std::sqrt(chi2) - e.huber * e.huber;
+}
+
 namespace
 {
 double totalCost(const std::vector<se2::Pose>& nodes, const std::vector<PoseGraphEdge>& edges)
 {
 	double cost = 0;
-	for (const auto& e : edges) cost += poseGraphChi2(nodes, e);
+	for (const auto& e : edges) cost += poseGraphCost(nodes, e);
 	return cost;
 }
 
@@ -50,7 +58,11 @@ void buildNormalEquations(
 		const se2::Pose& xj = nodes[e.to];
 		const Eigen::Matrix3d Ji = se2::jacBetweenA(xi, xj), Jj = se2::jacBetweenB(xi, xj);
 		const Eigen::Vector3d r = poseGraphResidual(nodes, e);
-		const Eigen::Matrix3d& W = e.information;
+		// Huber: the weight that makes the quadratic model's gradient the
+		// robust cost's (iteratively reweighted least squares).
+		const double chi2 = r.dot(e.information * r);
+		const double w = e.huber > 0 && chi2 > e.huber * e.huber ? e.huber / std::sqrt(chi2) : 1.0;
+		const Eigen::Matrix3d W = w * e.information;
 		addBlock(e.from, e.from, Ji.transpose() * W * Ji);
 		addBlock(e.from, e.to, Ji.transpose() * W * Jj);
 		addBlock(e.to, e.from, Jj.transpose() * W * Ji);

@@ -26,12 +26,16 @@ struct PoseGraphEdge
 	se2::Pose z{0, 0, 0};
 	/** Inverse covariance of z. */
 	Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
+	/** Huber threshold on the Mahalanobis distance sqrt(chi2): beyond it
+	 * the edge's cost grows linearly, not quadratically (0: plain least
+	 * squares). */
+	double huber = 0;
 };
 
 struct PoseGraphSolveReport
 {
 	size_t iterations = 0;
-	double initialCost = 0;  //!< sum of the edges' chi-square before
+	double initialCost = 0;  //!< sum of the edges' costs (poseGraphCost) before
 	double finalCost = 0;  //!< ... and after
 };
 
@@ -39,9 +43,11 @@ struct PoseGraphSolveReport
 Eigen::Vector3d poseGraphResidual(const std::vector<se2::Pose>& nodes, const PoseGraphEdge& e);
 /** r' * information * r for that residual. */
 double poseGraphChi2(const std::vector<se2::Pose>& nodes, const PoseGraphEdge& e);
+/** The edge's cost: its chi-square, or the Huber cost of it (e.huber > 0). */
+double poseGraphCost(const std::vector<se2::Pose>& nodes, const PoseGraphEdge& e);
 
 /** Moves every node but `fixedNode` to minimize the sum of the edges'
- * chi-square; stops after maxIterations or when a step no longer lowers the
+ * costs (iteratively reweighted for Huber edges); stops after maxIterations or when a step no longer lowers the
  * cost by a relative 1e-9. */
 PoseGraphSolveReport solvePoseGraph(
 	std::vector<se2::Pose>& nodes, const std::vector<PoseGraphEdge>& edges, size_t fixedNode,

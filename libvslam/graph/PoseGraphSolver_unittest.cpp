@@ -42,7 +42,7 @@ std::vector<PoseGraphEdge> ringEdges(const std::vector<se2::Pose>& truth)
 double totalCost(const std::vector<se2::Pose>& nodes, const std::vector<PoseGraphEdge>& edges)
 {
 	double c = 0;
-	for (const auto& e : edges) c += poseGraphChi2(nodes, e);
+	for (const auto& e : edges) c += poseGraphCost(nodes, e);
 	return c;
 }
 }  // namespace
@@ -121,4 +121,27 @@ TEST(PoseGraphSolver, AnUnreachedNodeDoesNotBreakTheSolve)
 	solvePoseGraph(nodes, edges, 0, 100);
 	EXPECT_NEAR(nodes[3].x, truth[3].x, 1e-6);
 	EXPECT_DOUBLE_EQ(nodes.back().x, 9);
+}
+
+TEST(PoseGraphSolver, HuberEdgesPullLessThanLeastSquares)
+{
+	// Two edges put node 1 at x = 0, a third at x = 10 (unit information).
+	// Least squares: the mean, 3.33. Huber with threshold 1: each of the
+	// two pulls with at most 2 * 1 from outside the threshold, so node 1
+	// stops inside it, where 2 * 2x = 2, x = 0.5.
+	for (const double huber : {0.0, 1.0})
+	{
+		std::vector<se2::Pose> nodes{{0, 0, 0}, {4, 0, 0}};
+		std::vector<PoseGraphEdge> edges(3);
+		for (auto& e : edges)
+		{
+			e.from = 0;
+			e.to = 1;
+			e.huber = huber;
+		}
+		edges[2].z = {10, 0, 0};
+		const auto report = solvePoseGraph(nodes, edges, 0, 100);
+		EXPECT_NEAR(nodes[1].x, huber > 0 ? 0.5 : 10.0 / 3, 1e-5) << "huber " << huber;
+		EXPECT_NEAR(report.finalCost, totalCost(nodes, edges) , 1e-9);
+	}
 }
