@@ -8,8 +8,10 @@
 # each (--oracle-rawlog). The filter then runs on both with filter seeds
 # 1..FILTER_SEEDS (the filter alone takes about a second per run), and the
 # table gives the ATE RMSE (raw and SE(2)-aligned) and median of the online
-# estimate, and the SE(2)-aligned ATE RMSE of the most-likely path, mean
-# over the filter seeds, for each rawlog and over all.
+# estimate, the SE(2)-aligned ATE RMSE of the most-likely path and the ATE
+# RMSE of the loop-closure graph's path at the end (pose_graph_path.tum; 0
+# when the run has none), mean over the filter seeds, for each rawlog and
+# over all.
 #
 #   [ORACLE_KIND=K] scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
 #
@@ -59,12 +61,13 @@ filter_runs() { # MEASUREMENT_RAWLOG GROUND_TRUTH
     raw="$(grep '^  vslam:' "$o/run_summary.yaml")"
     aligned="$(grep '^  vslam_se2_aligned:' "$o/run_summary.yaml")"
     smoothed="$(grep '^  most_likely_path_se2_aligned:' "$o/run_summary.yaml")"
-    echo "$(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$aligned") $(sed 's/.* median: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$smoothed")"
+    graph="$(grep '^  pose_graph_path:' "$o/run_summary.yaml" || echo ' rmse: 0,')"
+    echo "$(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$aligned") $(sed 's/.* median: \([0-9.]*\),.*/\1/' <<< "$raw") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$smoothed") $(sed 's/.* rmse: \([0-9.]*\),.*/\1/' <<< "$graph")"
     rm -rf "$o" "$OUT/run_$$.log"
-  done | awk '{r += $1; a += $2; m += $3; s += $4; n++} END {printf "%.3f %.3f %.3f %.3f\n", r / n, a / n, m / n, s / n}'
+  done | awk '{r += $1; a += $2; m += $3; s += $4; g += $5; n++} END {printf "%.3f %.3f %.3f %.3f %.3f\n", r / n, a / n, m / n, s / n, g / n}'
 }
 
-echo "| rawlog | measured: RMSE / aligned / median / most-likely path aligned | oracle ($KIND): RMSE / aligned / median / most-likely path aligned |"
+echo "| rawlog | measured: RMSE / aligned / median / most-likely path aligned / pose-graph path | oracle ($KIND): the same |"
 echo "|---|---|---|"
 TOTAL=""
 for rawlog in "${DATA[@]}"; do
@@ -82,5 +85,5 @@ for rawlog in "${DATA[@]}"; do
   echo "| $SCENARIO $name | $(tr ' ' '/' <<< "$m" | sed 's|/| / |g') | $(tr ' ' '/' <<< "$t" | sed 's|/| / |g') |"
   TOTAL+="$m $t"$'\n'
 done
-awk 'NF == 8 {for (i = 1; i <= 8; i++) s[i] += $i; n++}
-  END {printf "| **mean** | **%.3f** / %.3f / %.3f / %.3f | **%.3f** / %.3f / %.3f / %.3f |\n", s[1]/n, s[2]/n, s[3]/n, s[4]/n, s[5]/n, s[6]/n, s[7]/n, s[8]/n}' <<< "$TOTAL"
+awk 'NF == 10 {for (i = 1; i <= 10; i++) s[i] += $i; n++}
+  END {printf "| **mean** | **%.3f** / %.3f / %.3f / %.3f / %.3f | **%.3f** / %.3f / %.3f / %.3f / %.3f |\n", s[1]/n, s[2]/n, s[3]/n, s[4]/n, s[5]/n, s[6]/n, s[7]/n, s[8]/n, s[9]/n, s[10]/n}' <<< "$TOTAL"

@@ -12,7 +12,8 @@
  *   log_odometry_path.txt    dead reckoning (rbpf-slam's odometry format)
  *   log_filter_steps.txt     ESS, dual share, kidnap test, landmarks, time
  * and at the end (also after an error or Ctrl-C):
- *   final_map.txt, most_likely_path.txt/.tum, run_summary.yaml,
+ *   final_map.txt, most_likely_path.txt/.tum, pose_graph_path.tum,
+ *   run_summary.yaml,
  *   config_used.ini (the effective configuration).
  * main() wraps both with error reporting and exit codes.
  */

@@ -534,7 +534,7 @@ void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction
 	// particle sits on the solution's current pose: the spread and the
 	// weights stay as they are.
 	m_stats.loopClosures++;
-	m_stats.loopClosureEdgesLeftOut = c.rejectedEdges;
+	m_stats.loopClosureEdgesLeftOut = c.leftOutEdges;
 	const CVSlamParticle& best = m_particles[bestParticleIndex()].d;
 	LandmarkBank bank = best.bank;
 	for (const auto& [slot, pose] : c.landmarks)

@@ -161,7 +161,7 @@ CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
 		out.chi2 = solvePoseGraph(m_nodes, active, 0, m_options.max_iterations).finalCost;
 		if (revision == kMaxRevisions || !reviseOutliers()) break;
 	}
-	out.rejectedEdges =
+	out.leftOutEdges =
 		static_cast<size_t>(std::count(m_active.begin(), m_active.end(), false));
 	out.keyframe = m_nodes[m_lastKeyframeNode];
 	out.landmarks.reserve(m_landmarks.size());

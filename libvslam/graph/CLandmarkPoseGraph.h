@@ -71,7 +71,7 @@ class CLandmarkPoseGraph
 		/** Every landmark slot in the graph, with its pose. */
 		std::vector<std::pair<size_t, se2::Pose>> landmarks;
 		/** Measurement edges the gate leaves out of this solution. */
-		size_t rejectedEdges = 0;
+		size_t leftOutEdges = 0;
 		/** Sum of the chi-square errors after the optimization. */
 		double chi2 = 0;
 	};
