@@ -46,6 +46,10 @@ void buildNormalEquations(
 	std::vector<Eigen::Triplet<double>> triplets;
 	triplets.reserve(edges.size() * 36);
 	g = Eigen::VectorXd::Zero(n);
+	// Every diagonal entry is present (a node no edge reaches gets a 0), so
+	// damping never changes the pattern and one symbolic analysis serves the
+	// whole solve.
+	for (long k = 0; k < n; k++) triplets.emplace_back(k, k, 0.0);
 	auto addBlock = [&](size_t a, size_t b, const Eigen::Matrix3d& block) {
 		if (a == fixedNode || b == fixedNode) return;
 		const long ra = column(a, fixedNode), cb = column(b, fixedNode);
@@ -105,6 +109,7 @@ PoseGraphSolveReport vslam::solvePoseGraph(
 	for (size_t it = 0; it < maxIterations; it++)
 	{
 		buildNormalEquations(nodes, edges, fixedNode, H, g);
+		if (it == 0) solver.analyzePattern(H);
 		bool improved = false;
 		// Raise the damping until a step lowers the cost (or give up).
 		for (int attempt = 0; attempt < 10 && !improved; attempt++)
@@ -112,7 +117,7 @@ PoseGraphSolveReport vslam::solvePoseGraph(
 			Eigen::SparseMatrix<double> damped = H;
 			for (long k = 0; k < damped.rows(); k++)
 				damped.coeffRef(k, k) += lambda * (H.coeff(k, k) + kDampingFloor);
-			solver.compute(damped);
+			solver.factorize(damped);
 			if (solver.info() == Eigen::Success)
 			{
 				const Eigen::VectorXd dx = solver.solve(-g);
