@@ -72,7 +72,7 @@ class CLandmarkPoseGraph
 		std::vector<std::pair<size_t, se2::Pose>> landmarks;
 		/** Measurement edges the gate leaves out of this solution. */
 		size_t leftOutEdges = 0;
-		/** Sum of the chi-square errors after the optimization. */
+		/** The solution's cost: the sum over the edges in it (PoseGraphSolver.h). */
 		double chi2 = 0;
 	};
 
