@@ -72,9 +72,9 @@ void CLandmarkPoseGraph::addEdge(
 	e.to = to;
 	e.z = z;
 	e.information = (cov + kCovarianceFloor * Eigen::Matrix3d::Identity()).inverse();
+	if (gated) e.huber = m_options.huber_threshold;
 	m_edges.push_back(e);
-	m_gated.push_back(gated);
-	m_active.push_back(true);
+	m_edgeStates.push_back({gated, true});
 }
 
 void CLandmarkPoseGraph::addKeyframe(mrpt::Clock::time_point t, const se2::Pose& guess)
@@ -114,7 +114,6 @@ bool CLandmarkPoseGraph::addMeasurement(size_t slot, const LandmarkMeasurement& 
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: measurement before any keyframe");
 	auto& landmark = m_landmarks.at(slot);
 	addEdge(m_lastKeyframeNode, landmark.node, {m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R), true);
-	m_edges.back().huber = m_options.huber_threshold;
 	const double gap = std::chrono::duration<double>(*m_keyframe - landmark.lastSeen).count();
 	landmark.lastSeen = *m_keyframe;
 	return gap >= m_options.min_gap_s;
@@ -126,20 +125,21 @@ bool CLandmarkPoseGraph::reviseOutliers()
 	// Bring back every edge the solution now explains ...
 	bool changed = false;
 	for (size_t k = 0; k < m_edges.size(); k++)
-		if (m_gated[k] && !m_active[k] && poseGraphChi2(m_nodes, m_edges[k]) <= gate)
-			m_active[k] = true, changed = true;
+		if (m_edgeStates[k].gated && !m_edgeStates[k].active &&
+			poseGraphChi2(m_nodes, m_edges[k]) <= gate)
+			m_edgeStates[k].active = true, changed = true;
 	if (changed) return true;
 	// ... else leave out the one it explains worst, if outside the gate.
 	std::optional<size_t> worst;
 	double worstChi2 = gate;
 	for (size_t k = 0; k < m_edges.size(); k++)
 	{
-		if (!m_gated[k] || !m_active[k]) continue;
+		if (!m_edgeStates[k].gated || !m_edgeStates[k].active) continue;
 		const double chi2 = poseGraphChi2(m_nodes, m_edges[k]);
 		if (chi2 > worstChi2) worst = k, worstChi2 = chi2;
 	}
 	if (!worst) return false;
-	m_active[*worst] = false;
+	m_edgeStates[*worst].active = false;
 	return true;
 }
 
@@ -157,12 +157,12 @@ CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
 	{
 		active.clear();
 		for (size_t k = 0; k < m_edges.size(); k++)
-			if (m_active[k]) active.push_back(m_edges[k]);
+			if (m_edgeStates[k].active) active.push_back(m_edges[k]);
 		out.chi2 = solvePoseGraph(m_nodes, active, 0, m_options.max_iterations).finalCost;
 		if (revision == kMaxRevisions || !reviseOutliers()) break;
 	}
-	out.leftOutEdges =
-		static_cast<size_t>(std::count(m_active.begin(), m_active.end(), false));
+	out.leftOutEdges = static_cast<size_t>(std::count_if(
+		m_edgeStates.begin(), m_edgeStates.end(), [](const EdgeState& s) { return !s.active; }));
 	out.keyframe = m_nodes[m_lastKeyframeNode];
 	out.landmarks.reserve(m_landmarks.size());
 	for (const auto& [slot, landmark] : m_landmarks)

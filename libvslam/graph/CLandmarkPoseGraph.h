@@ -120,9 +120,15 @@ class CLandmarkPoseGraph
 	/** Node 0 is the start pose (fixed); then keyframes and landmarks. */
 	std::vector<se2::Pose> m_nodes;
 	std::vector<PoseGraphEdge> m_edges;
-	/** Per edge: a measurement the gate may leave out (not odometry, not a
-	 * landmark's creation), and whether it is in the current solution. */
-	std::vector<bool> m_gated, m_active;
+	/** Per edge (same index as m_edges): whether the gate may leave it out
+	 * (a measurement; not odometry, not a landmark's creation), and whether
+	 * it is in the current solution. */
+	struct EdgeState
+	{
+		bool gated = false;
+		bool active = true;
+	};
+	std::vector<EdgeState> m_edgeStates;
 	size_t m_lastKeyframeNode = 0;
 	std::optional<mrpt::Clock::time_point> m_keyframe;
 	COdometryAccumulator m_odometry;
@@ -131,6 +137,8 @@ class CLandmarkPoseGraph
 	std::map<size_t, LandmarkNode> m_landmarks;
 
 	size_t addNode(const se2::Pose& guess);
+	/** Adds an edge; a gated one is a measurement, with the Huber threshold
+	 * of the options. */
 	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, bool gated);
 	/** After a solve: brings back the left-out edges the solution explains,
 	 * or else leaves out the worst edge outside the gate; false if nothing

@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 
 using namespace vslam;
@@ -132,7 +133,7 @@ PoseGraphSolveReport vslam::solvePoseGraph(
 					improved = true;
 					report.iterations = it + 1;
 					if (gain < 1e-9) return report;
-					continue;
+					break;
 				}
 			}
 			lambda *= 10;
