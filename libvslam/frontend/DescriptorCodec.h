@@ -4,13 +4,18 @@
  * per landmark). SIFT descriptors are 128 values in 0..255:
  *  - float: as computed, 512 bytes each;
  *  - uint8: rounded to bytes, 128 bytes, nothing lost but rounding;
+ *  - uint4: 4 bits per value on a square-root scale (fine steps for the
+ *    many small values, coarse ones for the few large), two values per
+ *    byte: 64 bytes;
  *  - projected: a fixed random orthonormal projection to `dims` values
  *    (Johnson-Lindenstrauss: distances are kept up to a small relative
  *    error), each rounded to a signed byte: `dims` bytes.
  * Matching and the k-d tree work on the decoded codes (floats), and image
  * descriptors go through the same encoding first, so both sides carry the
  * same rounding. The projection is drawn from a fixed seed: the same on
- * every run and machine, and independent of any data.
+ * every run and machine, and independent of any data. A code's type and
+ * width say how it was stored (float: CV_32F; uint8: CV_8U, 128 columns;
+ * uint4: CV_8U, 64 columns; projected: CV_8S), so decode() needs no codec.
  */
 #include <opencv2/core.hpp>
 
@@ -25,6 +30,7 @@ class DescriptorCodec
 	{
 		Float,
 		Uint8,
+		Uint4,
 		Projected
 	};
 	DescriptorCodec(Kind kind, int projectedDims);
@@ -44,8 +50,11 @@ class DescriptorCodec
 	 * reach ~160 and the projection keeps norms, so projected values stay
 	 * within about +-250. */
 	static constexpr float kProjectedStep = 2.0f;
+	/** uint4: value v is stored as round(sqrt(v) / kUint4RootStep), at most
+	 * 15; SIFT values above (15 * kUint4RootStep)^2 = 158.8 saturate. */
+	static constexpr float kUint4RootStep = 0.84f;
 
-	static Kind parse(const std::string& name);  //!< float | uint8 | projected
+	static Kind parse(const std::string& name);  //!< float | uint8 | uint4 | projected
 	static const char* name(Kind kind);
 
    private:

@@ -74,7 +74,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
 	{
-		static const std::vector<std::string> kinds{"float", "uint8", "projected"};
+		static const std::vector<std::string> kinds{"float", "uint8", "uint4", "projected"};
 		const size_t def = std::find(kinds.begin(), kinds.end(), descriptor_storage) - kinds.begin();
 		descriptor_storage = kinds[readChoice(c, s, "descriptor_storage", def, kinds)];
 	}
@@ -142,7 +142,7 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "search_flann_trees", search_flann_trees, 30, 10, "flann: randomized k-d trees per index level");
 	c.write(s, "search_checks", search_checks, 30, 10, "flann: leaves checked per query and level");
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
-	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | projected (descriptor_dims B)");
+	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | uint4 (64 B) | projected (descriptor_dims B)");
 	c.write(s, "descriptor_dims", descriptor_dims, 30, 10, "Dimensions kept by the projected storage");
 	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
 	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");

@@ -98,7 +98,8 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * then verified with the stored descriptors. */
 	int search_dims = 16;
 	/** How descriptors are stored and matched (DescriptorCodec.h): float,
-	 * uint8 (128 bytes) or projected (descriptor_dims signed bytes). */
+	 * uint8 (128 bytes), uint4 (64 bytes, square-root scale) or projected
+	 * (descriptor_dims signed bytes). */
 	std::string descriptor_storage = "uint8";
 	int descriptor_dims = 32;
 
