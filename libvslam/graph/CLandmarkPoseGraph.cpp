@@ -29,6 +29,8 @@ void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
 		readDouble(c, s, "huber_threshold", huber_threshold, Range::nonNegative());
 	max_iterations = static_cast<uint32_t>(
 		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
+	max_keyframes = static_cast<uint32_t>(
+		readInt(c, s, "max_keyframes", max_keyframes, Range::closed(0, 1e8)));
 }
 
 void CLandmarkPoseGraph::TOptions::saveToConfigFile(
@@ -44,6 +46,8 @@ void CLandmarkPoseGraph::TOptions::saveToConfigFile(
 		"Huber threshold on the Mahalanobis distance of a measurement edge (0: least squares)");
 	c.write(s, "max_iterations", static_cast<int>(max_iterations), 25, 12,
 		"Levenberg-Marquardt iterations per optimization");
+	c.write(s, "max_keyframes", static_cast<int>(max_keyframes), 25, 12,
+		"Keyframes kept at most; beyond, every second one of the older half goes (0: no limit)");
 }
 
 CLandmarkPoseGraph::CLandmarkPoseGraph(const TOptions& options, const se2::Pose& start)
@@ -65,16 +69,16 @@ size_t CLandmarkPoseGraph::addNode(const se2::Pose& guess)
 }
 
 void CLandmarkPoseGraph::addEdge(
-	size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, bool gated)
+	size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, EdgeKind kind)
 {
 	PoseGraphEdge e;
 	e.from = from;
 	e.to = to;
 	e.z = z;
 	e.information = (cov + kCovarianceFloor * Eigen::Matrix3d::Identity()).inverse();
-	if (gated) e.huber = m_options.huber_threshold;
+	if (kind == EdgeKind::Measurement) e.huber = m_options.huber_threshold;
 	m_edges.push_back(e);
-	m_edgeStates.push_back({gated, true});
+	m_edgeStates.push_back({kind, true});
 }
 
 void CLandmarkPoseGraph::addKeyframe(mrpt::Clock::time_point t, const se2::Pose& guess)
@@ -84,12 +88,14 @@ void CLandmarkPoseGraph::addKeyframe(mrpt::Clock::time_point t, const se2::Pose&
 	if (m_odometryLost)
 		cov = Eigen::Vector3d(kLostOdometryVarXY, kLostOdometryVarXY, kLostOdometryVarPhi)
 				  .asDiagonal();
-	addEdge(m_lastKeyframeNode, node, m_odometry.mean(), cov, false);
+	addEdge(m_lastKeyframeNode, node, m_odometry.mean(), cov, EdgeKind::Odometry);
 	m_odometry.reset();
 	m_odometryLost = false;
 	m_lastKeyframeNode = node;
 	m_keyframe = t;
 	m_keyframeNodes.emplace_back(t, node);
+	if (m_options.max_keyframes > 0 && m_keyframeNodes.size() > m_options.max_keyframes)
+		thinKeyframes();
 }
 
 std::vector<std::pair<mrpt::Clock::time_point, se2::Pose>> CLandmarkPoseGraph::keyframePath() const
@@ -105,7 +111,7 @@ void CLandmarkPoseGraph::placeLandmark(size_t slot, const LandmarkMeasurement& m
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: landmark before any keyframe");
 	const se2::Pose z{m.z[0], m.z[1], m.z[2]};
 	const size_t node = addNode(se2::compose(m_nodes[m_lastKeyframeNode], z));
-	addEdge(m_lastKeyframeNode, node, z, Eigen::Matrix3d(m.R), false);
+	addEdge(m_lastKeyframeNode, node, z, Eigen::Matrix3d(m.R), EdgeKind::Creation);
 	m_landmarks[slot] = {node, *m_keyframe};
 }
 
@@ -113,7 +119,8 @@ bool CLandmarkPoseGraph::addMeasurement(size_t slot, const LandmarkMeasurement& 
 {
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: measurement before any keyframe");
 	auto& landmark = m_landmarks.at(slot);
-	addEdge(m_lastKeyframeNode, landmark.node, {m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R), true);
+	addEdge(m_lastKeyframeNode, landmark.node, {m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R),
+		EdgeKind::Measurement);
 	const double gap = std::chrono::duration<double>(*m_keyframe - landmark.lastSeen).count();
 	landmark.lastSeen = *m_keyframe;
 	return gap >= m_options.min_gap_s;
@@ -125,7 +132,7 @@ bool CLandmarkPoseGraph::reviseOutliers()
 	// Bring back every edge the solution now explains ...
 	bool changed = false;
 	for (size_t k = 0; k < m_edges.size(); k++)
-		if (m_edgeStates[k].gated && !m_edgeStates[k].active &&
+		if (m_edgeStates[k].kind == EdgeKind::Measurement && !m_edgeStates[k].active &&
 			poseGraphChi2(m_nodes, m_edges[k]) <= gate)
 			m_edgeStates[k].active = true, changed = true;
 	if (changed) return true;
@@ -134,7 +141,7 @@ bool CLandmarkPoseGraph::reviseOutliers()
 	double worstChi2 = gate;
 	for (size_t k = 0; k < m_edges.size(); k++)
 	{
-		if (!m_edgeStates[k].gated || !m_edgeStates[k].active) continue;
+		if (m_edgeStates[k].kind != EdgeKind::Measurement || !m_edgeStates[k].active) continue;
 		const double chi2 = poseGraphChi2(m_nodes, m_edges[k]);
 		if (chi2 > worstChi2) worst = k, worstChi2 = chi2;
 	}

@@ -21,6 +21,14 @@
  * exceeds a gate, and the graph is solved again (up to 10 revisions per
  * optimization; nothing is left out for good).
  * Only pose landmarks take part; point (range-bearing) landmarks do not.
+ *
+ * Bounded size: every frame with a measurement adds a keyframe, so a long
+ * run would make every solve, and the run, ever slower. Past
+ * `max_keyframes`, every second keyframe of the older half goes
+ * (CLandmarkPoseGraphThinning.cpp): its measurement edges are dropped and
+ * the odometry edges on either side become one. Keyframes a landmark was
+ * created from stay. The older a part of the run, the sparser its
+ * keyframes, and the graph stays within the cap.
  */
 #include <libvslam/graph/PoseGraphSolver.h>
 #include <libvslam/models/COdometryAccumulator.h>
@@ -54,6 +62,9 @@ class CLandmarkPoseGraph
 		double huber_threshold = 0;
 		/** Levenberg-Marquardt iterations per optimization. */
 		uint32_t max_iterations = 50;
+		/** Keyframes kept at most: beyond, the older half is thinned
+		 * (0: no limit). */
+		uint32_t max_keyframes = 2000;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -108,6 +119,7 @@ class CLandmarkPoseGraph
 
 	size_t keyframes() const { return m_keyframeNodes.size(); }
 	size_t edges() const { return m_edges.size(); }
+	size_t nodes() const { return m_nodes.size(); }
 
    private:
 	struct LandmarkNode
@@ -120,12 +132,17 @@ class CLandmarkPoseGraph
 	/** Node 0 is the start pose (fixed); then keyframes and landmarks. */
 	std::vector<se2::Pose> m_nodes;
 	std::vector<PoseGraphEdge> m_edges;
-	/** Per edge (same index as m_edges): whether the gate may leave it out
-	 * (a measurement; not odometry, not a landmark's creation), and whether
-	 * it is in the current solution. */
+	enum class EdgeKind : uint8_t
+	{
+		Odometry,  //!< between consecutive keyframes (node 0 first)
+		Creation,  //!< a keyframe to the landmark created from it
+		Measurement  //!< a keyframe to a landmark it measured: gated
+	};
+	/** Per edge (same index as m_edges): its kind, and whether it is in the
+	 * current solution (the gate may leave measurements out). */
 	struct EdgeState
 	{
-		bool gated = false;
+		EdgeKind kind = EdgeKind::Odometry;
 		bool active = true;
 	};
 	std::vector<EdgeState> m_edgeStates;
@@ -137,9 +154,11 @@ class CLandmarkPoseGraph
 	std::map<size_t, LandmarkNode> m_landmarks;
 
 	size_t addNode(const se2::Pose& guess);
-	/** Adds an edge; a gated one is a measurement, with the Huber threshold
-	 * of the options. */
-	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, bool gated);
+	/** Adds an edge; a measurement gets the Huber threshold of the options. */
+	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, EdgeKind kind);
+	/** Removes every second keyframe of the older half (see the file
+	 * comment); CLandmarkPoseGraphThinning.cpp. */
+	void thinKeyframes();
 	/** After a solve: brings back the left-out edges the solution explains,
 	 * or else leaves out the worst edge outside the gate; false if nothing
 	 * changed. */
