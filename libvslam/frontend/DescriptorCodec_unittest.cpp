@@ -112,7 +112,7 @@ TEST(DescriptorCodec, Uint4KeepsEachValueWithinHalfAStepOnTheRootScale)
 TEST(DescriptorCodec, CompactStoragesKeepTheNearestNeighbour)
 {
 	// Each stored row has a look-alike (the same row with noise) next to it,
-	// and the query is the row seen again with a little less noise: in the
+	// and the query is the row seen again with twice that noise: in the
 	// matching space its nearest neighbour must be the row itself about as
 	// often as with the float descriptors.
 	std::mt19937 rng(11);

@@ -28,7 +28,8 @@
  * (CLandmarkPoseGraphThinning.cpp): its measurement edges are dropped and
  * the odometry edges on either side become one. Keyframes a landmark was
  * created from stay. The older a part of the run, the sparser its
- * keyframes, and the graph stays within the cap.
+ * keyframes, and the graph stays within the cap, give or take those
+ * anchors (as many as the map has landmarks).
  */
 #include <libvslam/graph/PoseGraphSolver.h>
 #include <libvslam/models/COdometryAccumulator.h>

@@ -8,7 +8,7 @@
  * first order (COdometryAccumulator), exactly what the odometry would have
  * given had no keyframe been taken there. Each thinning halves the density
  * of the older half, so the density falls with age and the count stays
- * below the cap.
+ * below the cap, give or take the landmark anchors (bounded by the map).
  */
 #include <libvslam/graph/CLandmarkPoseGraph.h>
 
