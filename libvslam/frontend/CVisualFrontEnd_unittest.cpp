@@ -114,6 +114,21 @@ TEST(CVisualFrontEnd, CreatesOnTheFirstLapRecognizesOnTheSecondWithTheTruePose)
 	EXPECT_LT(*std::max_element(run.headingErrors.begin(), run.headingErrors.end()), 5 * kDeg);
 }
 
+TEST(CVisualFrontEnd, WithoutSiftUpsamplingStillRecognizesWithTheTruePose)
+{
+	// The faster SIFT mode finds fewer features at 320x240 (no octave on the
+	// doubled image); the room's texture is coarse enough for it.
+	TVisualFrontEndOptions options;
+	options.sift_upsample = false;
+	const LapsResult run = driveLaps(options, 2);
+	EXPECT_GE(run.created, 4u);
+	EXPECT_GE(run.translationErrors.size(), run.images / 2) << "recognitions";
+	EXPECT_LT(median(run.translationErrors), 0.03);
+	EXPECT_LT(median(run.headingErrors), 0.5 * kDeg);
+	EXPECT_LT(*std::max_element(run.translationErrors.begin(), run.translationErrors.end()), 0.3);
+	EXPECT_LT(*std::max_element(run.headingErrors.begin(), run.headingErrors.end()), 5 * kDeg);
+}
+
 /** How far the landmarks' scales are off in the last lap: the median over
  * landmarks of |median range ratio - 1|. */
 double medianScaleError(const LapsResult& run)

@@ -7,8 +7,46 @@
 using namespace vslam;
 
 FeatureExtractor::FeatureExtractor(const TVisualFrontEndOptions& o)
-	: m_sift(cv::SIFT::create(o.sift_features, 3, o.sift_contrast_threshold, o.sift_edge_threshold))
+	: m_sift(cv::SIFT::create(o.sift_features, 3, o.sift_contrast_threshold, o.sift_edge_threshold)),
+	  m_upsample(o.sift_upsample)
 {
+}
+
+namespace
+{
+/** OpenCV (4.6) doubles the image with a pixel-centre-aligned resize, so a
+ * pixel j of the doubled image lies at (j + 0.5) / 2 - 0.5 of the input,
+ * but it reports its keypoints at j / 2: a quarter pixel too far right and
+ * down. */
+constexpr float kOpenCvUpsamplingShift = 0.25f;
+}  // namespace
+
+std::vector<cv::Point2f> FeatureExtractor::detect(const cv::Mat& grey, cv::Mat& descriptors) const
+{
+	std::vector<cv::KeyPoint> keypoints;
+	std::vector<cv::Point2f> pixels;
+	if (m_upsample)
+	{
+		m_sift->detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
+		for (const auto& k : keypoints)
+			pixels.emplace_back(k.pt.x - kOpenCvUpsamplingShift, k.pt.y - kOpenCvUpsamplingShift);
+		return pixels;
+	}
+	// SIFT's first octave on the image as it is: give OpenCV the image halved
+	// (area averaging), which it doubles back. Each pixel i of the half image
+	// averages the input over [i * s, (i + 1) * s), its centre at
+	// (i + 0.5) * s - 0.5.
+	if (grey.cols < 2 || grey.rows < 2) return pixels;
+	cv::Mat half;
+	cv::resize(grey, half, cv::Size(grey.cols / 2, grey.rows / 2), 0, 0, cv::INTER_AREA);
+	m_sift->detectAndCompute(half, cv::noArray(), keypoints, descriptors);
+	const float sx = static_cast<float>(grey.cols) / half.cols, sy = static_cast<float>(grey.rows) / half.rows;
+	for (const auto& k : keypoints)
+	{
+		const cv::Point2f inHalf(k.pt.x - kOpenCvUpsamplingShift, k.pt.y - kOpenCvUpsamplingShift);
+		pixels.emplace_back((inHalf.x + 0.5f) * sx - 0.5f, (inHalf.y + 0.5f) * sy - 0.5f);
+	}
+	return pixels;
 }
 
 ImageFeatures FeatureExtractor::extract(const cv::Mat& image, const ImageCalibration& calib) const
@@ -22,14 +60,9 @@ ImageFeatures FeatureExtractor::extract(const cv::Mat& image, const ImageCalibra
 		cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
 	if (grey.depth() != CV_8U) grey.convertTo(grey, CV_8U);
 
-	std::vector<cv::KeyPoint> keypoints;
 	ImageFeatures f;
 	f.camera = calib.camera;
-	m_sift->detectAndCompute(grey, cv::noArray(), keypoints, f.descriptors);
-	std::vector<cv::Point2f> raw;
-	raw.reserve(keypoints.size());
-	for (const auto& k : keypoints) raw.push_back(k.pt);
-	f.pixels = calib.undistort(raw);
+	f.pixels = calib.undistort(detect(grey, f.descriptors));
 	if (f.descriptors.empty()) f.descriptors = cv::Mat(0, 128, CV_32F);
 	return f;
 }

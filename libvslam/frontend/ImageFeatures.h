@@ -27,7 +27,8 @@ struct ImageFeatures
 	size_t size() const { return pixels.size(); }
 };
 
-/** Detects SIFT features in an image of any size, colour or grey. */
+/** Detects SIFT features in an image of any size, colour or grey, at
+ * their true pixel positions (pixel centres at integer coordinates). */
 class FeatureExtractor
 {
    public:
@@ -36,7 +37,11 @@ class FeatureExtractor
 	ImageFeatures extract(const cv::Mat& image, const ImageCalibration& calibration) const;
 
    private:
+	/** Raw (distorted) pixel positions and descriptors of a grey image. */
+	std::vector<cv::Point2f> detect(const cv::Mat& grey, cv::Mat& descriptors) const;
+
 	cv::Ptr<cv::SIFT> m_sift;
+	bool m_upsample;
 };
 
 /** Ratio-test matches from `a` to `b` (index pairs), each `b` used once. */

@@ -22,6 +22,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	sift_contrast_threshold =
 		readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
 	sift_edge_threshold = readDouble(c, s, "sift_edge_threshold", sift_edge_threshold, Range::positive());
+	sift_upsample = readBool(c, s, "sift_upsample", sift_upsample);
 	match_ratio = readDouble(c, s, "match_ratio", match_ratio, {0, 1, false, true});
 	creation_views = readCount("creation_views", creation_views, 3, 10);
 	creation_min_baseline =
@@ -106,6 +107,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "sift_features", sift_features, 30, 10, "Strongest SIFT features kept per image (0: all)");
 	c.write(s, "sift_contrast_threshold", sift_contrast_threshold, 30, 10, "SIFT contrast threshold");
 	c.write(s, "sift_edge_threshold", sift_edge_threshold, 30, 10, "SIFT edge threshold");
+	c.write(s, "sift_upsample", sift_upsample, 30, 10,
+		"SIFT's first octave on the image doubled (true: finest features) or as it is (false: about 2x faster)");
 	c.write(s, "match_ratio", match_ratio, 30, 10, "Ratio test: best / second-best distance below this");
 	c.write(s, "creation_views", creation_views, 30, 10, "Images a new landmark is built from (>= 3)");
 	c.write(s, "creation_min_baseline", creation_min_baseline, 30, 10, "Robot travel between creation views [m]");

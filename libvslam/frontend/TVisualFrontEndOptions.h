@@ -21,6 +21,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	int sift_features = 600;  //!< strongest features kept per image (0: all)
 	double sift_contrast_threshold = 0.03;
 	double sift_edge_threshold = 10;
+	/** SIFT's first octave on the image doubled (OpenCV's way: the finest
+	 * features), or on the image as it is (false: about half the time, and
+	 * fewer features on small images). */
+	bool sift_upsample = true;
 	/** Lowe's ratio test between the best and second-best match. */
 	double match_ratio = 0.8;
 

@@ -1,0 +1,119 @@
+/** Where FeatureExtractor puts its features: at their true pixel positions,
+ * in either SIFT mode. A feature's position is checked without knowing where
+ * SIFT should find it: the image turned by 180 degrees has the same
+ * features, each at (W - 1 - x, H - 1 - y), so any constant offset in the
+ * reported positions shows as twice itself. */
+#include <gtest/gtest.h>
+#include <libvslam/frontend/ImageFeatures.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+
+using namespace vslam;
+
+namespace
+{
+cv::Mat texturedImage(int cols, int rows)
+{
+	cv::RNG rng(11);
+	cv::Mat image(rows, cols, CV_8UC1);
+	rng.fill(image, cv::RNG::UNIFORM, 0, 255);
+	cv::GaussianBlur(image, image, {0, 0}, 1.5);
+	cv::normalize(image, image, 0, 255, cv::NORM_MINMAX);
+	return image;
+}
+
+ImageCalibration calibrationOf(int cols, int rows, const TVisualFrontEndOptions& o)
+{
+	mrpt::img::TCamera camera;
+	camera.ncols = cols;
+	camera.nrows = rows;
+	camera.setIntrinsicParamsFromValues(300, 300, (cols - 1) / 2.0, (rows - 1) / 2.0);
+	return ImageCalibration::from(camera, cols, rows, o, "test");
+}
+
+struct Offsets
+{
+	size_t paired = 0;
+	double medianX = 0, medianY = 0;
+};
+
+/** Median of (x + x') - (W - 1) over features found at the same place in
+ * the image and in the image turned by 180 degrees: twice the offset. */
+Offsets twiceTheOffset(int cols, int rows, bool upsample)
+{
+	TVisualFrontEndOptions o;
+	o.sift_upsample = upsample;
+	const FeatureExtractor extractor(o);
+	const auto calibration = calibrationOf(cols, rows, o);
+	const cv::Mat image = texturedImage(cols, rows);
+	cv::Mat turned;
+	cv::flip(image, turned, -1);
+	const ImageFeatures a = extractor.extract(image, calibration);
+	const ImageFeatures b = extractor.extract(turned, calibration);
+	std::vector<double> sumX, sumY;
+	for (size_t i = 0; i < a.size(); i++)
+	{
+		for (size_t j = 0; j < b.size(); j++)
+		{
+			const double dx = a.pixels[i].x + b.pixels[j].x - (cols - 1);
+			const double dy = a.pixels[i].y + b.pixels[j].y - (rows - 1);
+			if (std::hypot(dx, dy) > 0.7) continue;
+			// The same feature: its descriptor is the mirror image, so
+			// compare positions only, and pair each feature once.
+			sumX.push_back(dx);
+			sumY.push_back(dy);
+			break;
+		}
+	}
+	Offsets out;
+	out.paired = sumX.size();
+	if (sumX.empty()) return out;
+	std::nth_element(sumX.begin(), sumX.begin() + sumX.size() / 2, sumX.end());
+	std::nth_element(sumY.begin(), sumY.begin() + sumY.size() / 2, sumY.end());
+	out.medianX = sumX[sumX.size() / 2];
+	out.medianY = sumY[sumY.size() / 2];
+	return out;
+}
+}  // namespace
+
+TEST(FeatureExtractor, FeaturesAreAtTheirTruePixelPositionsOnTheDoubledImage)
+{
+	// Without the correction OpenCV's positions are a quarter pixel off:
+	// twice the offset is 0.5.
+	for (const auto& [cols, rows] : {std::pair{320, 240}, std::pair{321, 241}})
+	{
+		const Offsets o = twiceTheOffset(cols, rows, true);
+		ASSERT_GE(o.paired, 100u) << cols << "x" << rows;
+		EXPECT_NEAR(o.medianX, 0, 0.05) << cols << "x" << rows;
+		EXPECT_NEAR(o.medianY, 0, 0.05) << cols << "x" << rows;
+	}
+}
+
+TEST(FeatureExtractor, FeaturesAreAtTheirTruePixelPositionsWithoutUpsampling)
+{
+	for (const auto& [cols, rows] : {std::pair{640, 480}, std::pair{641, 481}})
+	{
+		const Offsets o = twiceTheOffset(cols, rows, false);
+		ASSERT_GE(o.paired, 100u) << cols << "x" << rows;
+		EXPECT_NEAR(o.medianX, 0, 0.05) << cols << "x" << rows;
+		EXPECT_NEAR(o.medianY, 0, 0.05) << cols << "x" << rows;
+	}
+}
+
+TEST(FeatureExtractor, WithoutUpsamplingTheFinestScaleIsLeftOut)
+{
+	// The doubled image's octave holds the smallest blobs: without it fewer
+	// features pass on a fine texture.
+	TVisualFrontEndOptions fine, coarse;
+	fine.sift_features = coarse.sift_features = 0;
+	coarse.sift_upsample = false;
+	const cv::Mat image = texturedImage(320, 240);
+	const auto withUpsampling = FeatureExtractor(fine).extract(image, calibrationOf(320, 240, fine));
+	const auto without = FeatureExtractor(coarse).extract(image, calibrationOf(320, 240, coarse));
+	EXPECT_GT(without.size(), 0u);
+	EXPECT_LT(without.size(), withUpsampling.size());
+	EXPECT_EQ(without.descriptors.rows, static_cast<int>(without.size()));
+	EXPECT_EQ(without.descriptors.cols, 128);
+}
