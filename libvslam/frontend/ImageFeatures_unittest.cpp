@@ -9,6 +9,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 using namespace vslam;
 
@@ -76,30 +78,30 @@ Offsets twiceTheOffset(int cols, int rows, bool upsample)
 	out.medianY = sumY[sumY.size() / 2];
 	return out;
 }
+
+/** Features of images of each size lie where they are, to 0.025 pixels. */
+void expectTruePositions(const std::vector<std::pair<int, int>>& sizes, bool upsample)
+{
+	for (const auto& [cols, rows] : sizes)
+	{
+		const Offsets o = twiceTheOffset(cols, rows, upsample);
+		ASSERT_GE(o.paired, 100u) << cols << "x" << rows;
+		EXPECT_NEAR(o.medianX, 0, 0.05) << cols << "x" << rows;
+		EXPECT_NEAR(o.medianY, 0, 0.05) << cols << "x" << rows;
+	}
+}
 }  // namespace
 
 TEST(FeatureExtractor, FeaturesAreAtTheirTruePixelPositionsOnTheDoubledImage)
 {
 	// Without the correction OpenCV's positions are a quarter pixel off:
 	// twice the offset is 0.5.
-	for (const auto& [cols, rows] : {std::pair{320, 240}, std::pair{321, 241}})
-	{
-		const Offsets o = twiceTheOffset(cols, rows, true);
-		ASSERT_GE(o.paired, 100u) << cols << "x" << rows;
-		EXPECT_NEAR(o.medianX, 0, 0.05) << cols << "x" << rows;
-		EXPECT_NEAR(o.medianY, 0, 0.05) << cols << "x" << rows;
-	}
+	expectTruePositions({{320, 240}, {321, 241}}, true);
 }
 
 TEST(FeatureExtractor, FeaturesAreAtTheirTruePixelPositionsWithoutUpsampling)
 {
-	for (const auto& [cols, rows] : {std::pair{640, 480}, std::pair{641, 481}})
-	{
-		const Offsets o = twiceTheOffset(cols, rows, false);
-		ASSERT_GE(o.paired, 100u) << cols << "x" << rows;
-		EXPECT_NEAR(o.medianX, 0, 0.05) << cols << "x" << rows;
-		EXPECT_NEAR(o.medianY, 0, 0.05) << cols << "x" << rows;
-	}
+	expectTruePositions({{640, 480}, {641, 481}}, false);
 }
 
 TEST(FeatureExtractor, WithoutUpsamplingTheFinestScaleIsLeftOut)
