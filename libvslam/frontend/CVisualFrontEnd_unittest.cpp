@@ -97,21 +97,26 @@ double median(std::vector<double> v)
 	std::sort(v.begin(), v.end());
 	return v.empty() ? 1e9 : v[v.size() / 2];
 }
+
+/** Two laps: landmarks built on the first, recognized on the second, and
+ * no false recognitions: every measurement is near the truth (the worst,
+ * ~0.13 m and ~3 deg, have 13-25 inliers at the edge of a landmark's reach). */
+void expectTruePosesOnTheSecondLap(const LapsResult& run)
+{
+	EXPECT_GE(run.created, 4u);
+	EXPECT_GE(run.translationErrors.size(), run.images / 2) << "recognitions";
+	EXPECT_LT(median(run.translationErrors), 0.03);
+	EXPECT_LT(median(run.headingErrors), 0.5 * kDeg);
+	EXPECT_LT(*std::max_element(run.translationErrors.begin(), run.translationErrors.end()), 0.3);
+	EXPECT_LT(*std::max_element(run.headingErrors.begin(), run.headingErrors.end()), 5 * kDeg);
+}
 }  // namespace
 
 TEST(CVisualFrontEnd, CreatesOnTheFirstLapRecognizesOnTheSecondWithTheTruePose)
 {
 	const LapsResult run = driveLaps(TVisualFrontEndOptions(), 2);
-	EXPECT_GE(run.created, 4u);
-	EXPECT_GE(run.translationErrors.size(), run.images / 2) << "recognitions";
-	EXPECT_LT(median(run.translationErrors), 0.03);
-	EXPECT_LT(median(run.headingErrors), 0.5 * kDeg);
+	expectTruePosesOnTheSecondLap(run);
 	EXPECT_EQ(run.withPredictedCovariance, run.translationErrors.size());
-	// No false recognitions: every measurement is near the truth (the
-	// worst, ~0.13 m and ~3 deg, have 13-25 inliers at the edge of a
-	// landmark's reach).
-	EXPECT_LT(*std::max_element(run.translationErrors.begin(), run.translationErrors.end()), 0.3);
-	EXPECT_LT(*std::max_element(run.headingErrors.begin(), run.headingErrors.end()), 5 * kDeg);
 }
 
 TEST(CVisualFrontEnd, WithoutSiftUpsamplingStillRecognizesWithTheTruePose)
@@ -120,13 +125,7 @@ TEST(CVisualFrontEnd, WithoutSiftUpsamplingStillRecognizesWithTheTruePose)
 	// doubled image); the room's texture is coarse enough for it.
 	TVisualFrontEndOptions options;
 	options.sift_upsample = false;
-	const LapsResult run = driveLaps(options, 2);
-	EXPECT_GE(run.created, 4u);
-	EXPECT_GE(run.translationErrors.size(), run.images / 2) << "recognitions";
-	EXPECT_LT(median(run.translationErrors), 0.03);
-	EXPECT_LT(median(run.headingErrors), 0.5 * kDeg);
-	EXPECT_LT(*std::max_element(run.translationErrors.begin(), run.translationErrors.end()), 0.3);
-	EXPECT_LT(*std::max_element(run.headingErrors.begin(), run.headingErrors.end()), 5 * kDeg);
+	expectTruePosesOnTheSecondLap(driveLaps(options, 2));
 }
 
 /** How far the landmarks' scales are off in the last lap: the median over

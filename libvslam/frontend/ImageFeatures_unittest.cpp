@@ -62,8 +62,8 @@ Offsets twiceTheOffset(int cols, int rows, bool upsample)
 			const double dx = a.pixels[i].x + b.pixels[j].x - (cols - 1);
 			const double dy = a.pixels[i].y + b.pixels[j].y - (rows - 1);
 			if (std::hypot(dx, dy) > 0.7) continue;
-			// The same feature: its descriptor is the mirror image, so
-			// compare positions only, and pair each feature once.
+			// The same feature (its descriptor is the mirror image, so only
+			// positions compare): the first one this close is taken.
 			sumX.push_back(dx);
 			sumY.push_back(dy);
 			break;
