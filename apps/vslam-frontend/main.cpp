@@ -70,14 +70,14 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	FILE* f = std::fopen(csvFile.c_str(), "wt");
 	if (!f) throw InputError("cannot create '" + csvFile + "'");
 	std::fprintf(f, "t,landmark,dx,dy,dphi_deg,true_dx,true_dy,true_dphi_deg,ProjErrRMS,NPoints,Slope,accepted,"
-		"beyond_3_sigma,pred_std_dx,pred_std_dy,pred_std_dphi_deg\n");
+		"beyond_3_sigma,pred_std_dx,pred_std_dy,pred_std_dphi_deg,Height\n");
 	for (const auto& e : a.errors)
-		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d,%.5f,%.5f,%.4f\n", e.measurement.t,
+		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d,%.5f,%.5f,%.4f,%.5f\n", e.measurement.t,
 			static_cast<long long>(e.measurement.landmarkID), e.measurement.z.x, e.measurement.z.y,
 			e.measurement.z.phi * 180 / M_PI, e.expected.x, e.expected.y, e.expected.phi * 180 / M_PI,
 			e.measurement.ProjErrRMS, e.measurement.NPoints, e.measurement.Slope, e.accepted ? 1 : 0,
 			e.beyond3Sigma ? 1 : 0, e.measurement.predictedStdX, e.measurement.predictedStdY,
-			e.measurement.predictedStdPhi * 180 / M_PI);
+			e.measurement.predictedStdPhi * 180 / M_PI, e.measurement.Height);
 	std::fclose(f);
 }
 
@@ -215,7 +215,8 @@ int main(int argc, const char** argv)
 				if (const auto* m = dynamic_cast<const CObservationVisualLandmark*>(o.get()))
 					records.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID,
 						{m->relPose.x(), m->relPose.y(), m->relPose.phi()}, m->ProjErrRMS, m->NPoints, m->Slope,
-						std::sqrt(m->relPoseCov(0, 0)), std::sqrt(m->relPoseCov(1, 1)), std::sqrt(m->relPoseCov(2, 2))});
+						m->Height, std::sqrt(m->relPoseCov(0, 0)), std::sqrt(m->relPoseCov(1, 1)),
+						std::sqrt(m->relPoseCov(2, 2))});
 				else if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
 					creationTimes[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
 			}

@@ -90,6 +90,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "    prefilter_ProjErrRMS: " << ex.rejectedProjErrRMS << "\n"
 	  << "    prefilter_NPoints: " << ex.rejectedNPoints << "\n"
 	  << "    prefilter_Slope: " << ex.rejectedSlope << "\n"
+	  << "    prefilter_Height: " << ex.rejectedHeight << "\n"
 	  << "    no_landmark_id: " << ex.rejectedNoLandmarkID << "\n"
 	  << "    range_limits: " << ex.rejectedRangeLimits << "\n"
 	  << "    unexplained_by_any_particle: " << fs.rejectedUnexplained << "\n"

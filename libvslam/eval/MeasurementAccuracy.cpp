@@ -66,7 +66,7 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 		const se2::Pose expected = *truthOfIt;
 		const Eigen::Vector3d e = se2::difference(m.z, expected);
 		const bool beyond = beyondThreeSigma(m.z, expected, sigma);
-		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope) == CPreFilter::Verdict::Accepted;
+		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope, m.Height) == CPreFilter::Verdict::Accepted;
 		out.errors.push_back({m, expected, e, ok, beyond});
 		for (ErrorList* list : {&all, &accepted})
 		{

@@ -28,6 +28,7 @@ struct LandmarkMeasurementRecord
 	double ProjErrRMS = 0;
 	uint32_t NPoints = 0;
 	double Slope = 0;
+	double Height = 0;  //!< m (CObservationVisualLandmark::Height)
 	/** Predicted std of dx, dy (m) and dtheta (rad) from the pose solve
 	 * (0: not known). */
 	double predictedStdX = 0, predictedStdY = 0, predictedStdPhi = 0;

@@ -100,6 +100,9 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 				case CPreFilter::Verdict::RejectedSlope:
 					m_stats.rejectedSlope++;
 					continue;
+				case CPreFilter::Verdict::RejectedHeight:
+					m_stats.rejectedHeight++;
+					continue;
 				case CPreFilter::Verdict::Accepted:
 					break;
 			}

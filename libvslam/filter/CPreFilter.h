@@ -3,7 +3,10 @@
  * The paper's pre-filter: rejects unreliable visual measurements by an
  * acceptance region over their three statistics. Defaults are the paper's:
  * reject if ProjErrRMS > 3.0, or NPoints < 10, or |Slope| > 0.1; the first
- * violated rule (in that order) is reported.
+ * violated rule (in that order) is reported. One rule beyond the paper, off
+ * by default: |Height| > max_Height, the robot's height above the landmark
+ * frame implied by the 6-DOF solution, which is 0 for a robot on a level
+ * floor whatever the landmark's scale (Slope's twin for the translation).
  */
 #include <mrpt/config/CLoadableOptions.h>
 
@@ -21,6 +24,7 @@ class CPreFilter
 		double max_ProjErrRMS = 3.0;  //!< pixels
 		uint32_t min_NPoints = 10;
 		double max_Slope = 0.1;  //!< on |Slope|, rad
+		double max_Height = 0;  //!< on |Height|, m; 0: not checked
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -35,14 +39,15 @@ class CPreFilter
 		Accepted = 0,
 		RejectedProjErrRMS,
 		RejectedNPoints,
-		RejectedSlope
+		RejectedSlope,
+		RejectedHeight
 	};
 
 	CPreFilter() = default;
 	explicit CPreFilter(const TOptions& o) : options(o) {}
 	TOptions options;
 
-	Verdict check(double ProjErrRMS, uint32_t NPoints, double Slope) const;
+	Verdict check(double ProjErrRMS, uint32_t NPoints, double Slope, double Height) const;
 	Verdict check(const CObservationVisualLandmark& obs) const;
 };
 

@@ -11,34 +11,50 @@ using V = CPreFilter::Verdict;
 TEST(CPreFilter, PaperDefaults)
 {
 	const CPreFilter pf;
-	EXPECT_EQ(pf.check(3.0, 10, 0.1), V::Accepted);  // boundaries accepted
-	EXPECT_EQ(pf.check(3.01, 50, 0.0), V::RejectedProjErrRMS);
-	EXPECT_EQ(pf.check(1.0, 9, 0.0), V::RejectedNPoints);
-	EXPECT_EQ(pf.check(1.0, 50, 0.11), V::RejectedSlope);
-	EXPECT_EQ(pf.check(1.0, 50, -0.11), V::RejectedSlope);
+	EXPECT_EQ(pf.check(3.0, 10, 0.1, 0), V::Accepted);  // boundaries accepted
+	EXPECT_EQ(pf.check(3.01, 50, 0.0, 0), V::RejectedProjErrRMS);
+	EXPECT_EQ(pf.check(1.0, 9, 0.0, 0), V::RejectedNPoints);
+	EXPECT_EQ(pf.check(1.0, 50, 0.11, 0), V::RejectedSlope);
+	EXPECT_EQ(pf.check(1.0, 50, -0.11, 0), V::RejectedSlope);
 }
 
 TEST(CPreFilter, FirstViolatedRuleInThePapersOrder)
 {
 	const CPreFilter pf;
-	EXPECT_EQ(pf.check(5.0, 2, 1.0), V::RejectedProjErrRMS);
-	EXPECT_EQ(pf.check(1.0, 2, 1.0), V::RejectedNPoints);
+	EXPECT_EQ(pf.check(5.0, 2, 1.0, 0), V::RejectedProjErrRMS);
+	EXPECT_EQ(pf.check(1.0, 2, 1.0, 0), V::RejectedNPoints);
 }
 
 TEST(CPreFilter, NaNStatisticsAreRejected)
 {
 	const CPreFilter pf;
-	EXPECT_EQ(pf.check(std::nan(""), 50, 0), V::RejectedProjErrRMS);
-	EXPECT_EQ(pf.check(1.0, 50, std::nan("")), V::RejectedSlope);
+	EXPECT_EQ(pf.check(std::nan(""), 50, 0, 0), V::RejectedProjErrRMS);
+	EXPECT_EQ(pf.check(1.0, 50, std::nan(""), 0), V::RejectedSlope);
+}
+
+TEST(CPreFilter, HeightIsCheckedOnlyWhenConfigured)
+{
+	CPreFilter pf;
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, 3.0), V::Accepted);  // the paper's region has no height rule
+	pf.options.max_Height = 0.1;
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, 0.1), V::Accepted);
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, -0.1), V::Accepted);
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, 0.11), V::RejectedHeight);
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, -0.11), V::RejectedHeight);
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, std::nan("")), V::RejectedHeight);
+	EXPECT_EQ(pf.check(1.0, 50, 0.2, 0.5), V::RejectedSlope);  // the paper's rules first
 }
 
 TEST(CPreFilter, ConfigurableRegion)
 {
 	mrpt::config::CConfigFileMemory c(
-		"[p]\nmax_ProjErrRMS = 5\nmin_NPoints = 4\nmax_Slope = 0.3\n");
+		"[p]\nmax_ProjErrRMS = 5\nmin_NPoints = 4\nmax_Slope = 0.3\nmax_Height = 0.05\n");
 	CPreFilter pf;
 	pf.options.loadFromConfigFile(c, "p");
-	EXPECT_EQ(pf.check(4.0, 5, 0.2), V::Accepted);
+	EXPECT_EQ(pf.check(4.0, 5, 0.2, 0.05), V::Accepted);
+	EXPECT_EQ(pf.check(4.0, 5, 0.2, 0.06), V::RejectedHeight);
 	mrpt::config::CConfigFileMemory bad("[p]\nmin_NPoints = -1\n");
 	EXPECT_THROW(pf.options.loadFromConfigFile(bad, "p"), ConfigError);
+	mrpt::config::CConfigFileMemory negativeHeight("[p]\nmax_Height = -0.1\n");
+	EXPECT_THROW(pf.options.loadFromConfigFile(negativeHeight, "p"), ConfigError);
 }

@@ -5,7 +5,9 @@
  * camera relative to those points, Levenberg-Marquardt refinement on the
  * inliers, then through the camera mount the paper's measurement: the
  * landmark frame's planar pose (dx, dy, dtheta) in the robot frame, with
- * NPoints (inliers), ProjErrRMS (px) and Slope (robot tilt, rad).
+ * NPoints (inliers), ProjErrRMS (px) and Slope (robot tilt, rad), and the
+ * robot's height in the landmark frame (robotInLandmark.z(), 0 on a level
+ * floor; the pre-filter's optional max_Height).
  * It also predicts how uncertain (dx, dy, dtheta) is: the pose covariance
  * of the least-squares solve (reprojection Jacobian, the inliers' own
  * error) carried to the planar measurement. A few points in a small part

@@ -9,7 +9,7 @@ using namespace vslam;
 
 IMPLEMENTS_SERIALIZABLE(CObservationVisualLandmark, mrpt::obs::CObservation, vslam)
 
-uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 1; }
+uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 2; }
 
 void CObservationVisualLandmark::serializeTo(
 	mrpt::serialization::CArchive& out) const
@@ -20,6 +20,7 @@ void CObservationVisualLandmark::serializeTo(
 	out << ProjErrRMS << NPoints << Slope << sensorPoseOnRobot;
 	for (int r = 0; r < 3; r++)
 		for (int c = 0; c < 3; c++) out << relPoseCov(r, c);
+	out << Height;
 }
 
 void CObservationVisualLandmark::serializeFrom(
@@ -29,6 +30,7 @@ void CObservationVisualLandmark::serializeFrom(
 	{
 		case 0:
 		case 1:
+		case 2:
 		{
 			double x = 0, y = 0, phi = 0;
 			in >> timestamp;
@@ -40,6 +42,8 @@ void CObservationVisualLandmark::serializeFrom(
 			if (version >= 1)
 				for (int r = 0; r < 3; r++)
 					for (int c = 0; c < 3; c++) in >> relPoseCov(r, c);
+			Height = 0;
+			if (version >= 2) in >> Height;
 		}
 		break;
 		default:
@@ -56,13 +60,14 @@ void CObservationVisualLandmark::getDescriptionAsText(std::ostream& o) const
 	  << " ProjErrRMS : " << ProjErrRMS << " px\n"
 	  << " NPoints    : " << NPoints << "\n"
 	  << " Slope      : " << Slope << " rad\n"
+	  << " Height     : " << Height << " m\n"
 	  << " sensorPose : " << sensorPoseOnRobot << "\n"
 	  << " relPoseCov : " << relPoseCov.inMatlabFormat() << " (predicted; zero: not known)\n";
 }
 
 std::string CObservationVisualLandmark::exportTxtHeader() const
 {
-	return "landmarkID dx dy dtheta ProjErrRMS NPoints Slope";
+	return "landmarkID dx dy dtheta ProjErrRMS NPoints Slope Height";
 }
 
 std::string CObservationVisualLandmark::exportTxtDataRow() const
@@ -70,6 +75,6 @@ std::string CObservationVisualLandmark::exportTxtDataRow() const
 	std::ostringstream s;
 	s << std::setprecision(9) << landmarkID << ' ' << relPose.x() << ' '
 	  << relPose.y() << ' ' << relPose.phi() << ' ' << ProjErrRMS << ' '
-	  << NPoints << ' ' << Slope;
+	  << NPoints << ' ' << Slope << ' ' << Height;
 	return s.str();
 }

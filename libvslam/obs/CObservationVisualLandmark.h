@@ -4,7 +4,8 @@
  * the current image, and the landmark frame lies at the relative pose
  * (dx, dy, dtheta) in the robot frame (x forward, y left, origin on the floor
  * below the drive-wheel axis), with the paper's three quality statistics
- * and (version 1) the covariance the pose solve predicts for it.
+ * and (version 1) the covariance the pose solve predicts for it, (version 2)
+ * the robot's height above the landmark frame that the solve implies.
  */
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/obs/CObservation.h>
@@ -33,6 +34,11 @@ class CObservationVisualLandmark : public mrpt::obs::CObservation
 	uint32_t NPoints{0};
 	/** Robot tilt implied by the 6-DOF solution (rad; ~0 on a level floor). */
 	double Slope{0};
+	/** Height of the robot frame above the landmark frame implied by the
+	 * 6-DOF solution (m; ~0 on a level floor, whatever the landmark's scale:
+	 * both frames are the robot's on the floor). 0 in rawlogs of
+	 * serialization versions 0-1. */
+	double Height{0};
 	/** Camera pose on the robot (informational: relPose is already in the
 	 * robot frame). */
 	mrpt::poses::CPose3D sensorPoseOnRobot;

@@ -29,6 +29,7 @@ TEST(Observations, VisualLandmarkRoundTrip)
 	o.ProjErrRMS = 1.25;
 	o.NPoints = 42;
 	o.Slope = -0.01;
+	o.Height = 0.035;
 	o.sensorPoseOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.3, 0, 0.2, 0);
 	o.relPoseCov(0, 0) = 4e-4;
 	o.relPoseCov(1, 1) = 9e-4;
@@ -48,11 +49,35 @@ TEST(Observations, VisualLandmarkRoundTrip)
 	EXPECT_EQ(back->ProjErrRMS, o.ProjErrRMS);
 	EXPECT_EQ(back->NPoints, o.NPoints);
 	EXPECT_EQ(back->Slope, o.Slope);
+	EXPECT_EQ(back->Height, o.Height);
 	EXPECT_EQ(back->sensorPoseOnRobot, o.sensorPoseOnRobot);
 	EXPECT_EQ(back->relPoseCov, o.relPoseCov);
 	EXPECT_EQ(back->exportTxtDataRow(), o.exportTxtDataRow());
-	EXPECT_EQ(o.exportTxtHeader(), "landmarkID dx dy dtheta ProjErrRMS NPoints Slope");
+	EXPECT_EQ(o.exportTxtHeader(), "landmarkID dx dy dtheta ProjErrRMS NPoints Slope Height");
 }
+
+namespace
+{
+/** `o` serialized as an older version: the current bytes with the version
+ * byte replaced and the last `droppedBytes` before the end marker removed. */
+CObservationVisualLandmark::Ptr readAsOlderVersion(const CObservationVisualLandmark& o, uint8_t version, size_t droppedBytes)
+{
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	const auto* data = static_cast<const uint8_t*>(buf.getRawBufferData());
+	std::vector<uint8_t> bytes(data, data + buf.getTotalBytesCount());
+	const std::string name = "vslam::CObservationVisualLandmark";
+	const size_t versionPos = 1 + name.size();
+	EXPECT_EQ(bytes[versionPos], 2);
+	bytes[versionPos] = version;
+	bytes.erase(bytes.end() - 1 - static_cast<long>(droppedBytes), bytes.end() - 1);  // keep the end marker
+	mrpt::io::CMemoryStream old;
+	old.assignMemoryNotOwn(bytes.data(), bytes.size());
+	auto oldArch = mrpt::serialization::archiveFrom(old);
+	return oldArch.ReadObject<CObservationVisualLandmark>();
+}
+}  // namespace
 
 TEST(Observations, VisualLandmarkOfVersionZeroReadsWithAnUnknownCovariance)
 {
@@ -61,25 +86,27 @@ TEST(Observations, VisualLandmarkOfVersionZeroReadsWithAnUnknownCovariance)
 	o.landmarkID = 7;
 	o.relPose = mrpt::poses::CPose2D(1, 2, 0.5);
 	o.relPoseCov(0, 0) = 1;
-	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << o;
-	const auto* data = static_cast<const uint8_t*>(buf.getRawBufferData());
-	std::vector<uint8_t> bytes(data, data + buf.getTotalBytesCount());
-	const std::string name = "vslam::CObservationVisualLandmark";
-	const size_t versionPos = 1 + name.size();
-	ASSERT_EQ(bytes[versionPos], 1);
-	bytes[versionPos] = 0;
-	const size_t covBytes = 9 * sizeof(double);
-	bytes.erase(bytes.end() - 1 - static_cast<long>(covBytes), bytes.end() - 1);  // keep the end marker
-	mrpt::io::CMemoryStream old;
-	old.assignMemoryNotOwn(bytes.data(), bytes.size());
-	auto oldArch = mrpt::serialization::archiveFrom(old);
-	auto back = oldArch.ReadObject<CObservationVisualLandmark>();
+	o.Height = 0.5;
+	const auto back = readAsOlderVersion(o, 0, 10 * sizeof(double));
 	ASSERT_TRUE(back);
 	EXPECT_EQ(back->landmarkID, 7);
 	EXPECT_EQ(back->relPose, o.relPose);
 	EXPECT_EQ(back->relPoseCov, mrpt::math::CMatrixDouble33::Zero());
+	EXPECT_EQ(back->Height, 0);
+}
+
+TEST(Observations, VisualLandmarkOfVersionOneReadsWithZeroHeight)
+{
+	// Version 1 is version 2 without the trailing Height (one double).
+	CObservationVisualLandmark o;
+	o.landmarkID = 8;
+	o.relPoseCov(2, 2) = 3e-4;
+	o.Height = -0.25;
+	const auto back = readAsOlderVersion(o, 1, sizeof(double));
+	ASSERT_TRUE(back);
+	EXPECT_EQ(back->landmarkID, 8);
+	EXPECT_EQ(back->relPoseCov, o.relPoseCov);
+	EXPECT_EQ(back->Height, 0);
 }
 
 TEST(Observations, LandmarkCreatedRoundTrip)
@@ -111,7 +138,7 @@ TEST(Observations, DescriptionAndExportMentionEveryField)
 	o.NPoints = 12;
 	std::ostringstream s;
 	o.getDescriptionAsText(s);
-	for (const char* f : {"landmarkID", "ProjErrRMS", "NPoints", "Slope"})
+	for (const char* f : {"landmarkID", "ProjErrRMS", "NPoints", "Slope", "Height"})
 		EXPECT_NE(s.str().find(f), std::string::npos) << f;
 	EXPECT_TRUE(o.exportTxtSupported());
 	EXPECT_EQ(o.exportTxtDataRow().substr(0, 2), "5 ");
