@@ -82,8 +82,9 @@ namespace
 {
 /** Builds a landmark from three views 0.2 m apart along a slightly turning
  * forward path, recognizes it from three other poses and returns the worst
- * errors against the truth: {translation m, heading rad, ProjErrRMS px}. */
-std::array<double, 3> createAndRecognize(double pixelNoise, uint32_t seed)
+ * errors against the truth: {translation m, heading rad, ProjErrRMS px,
+ * |Height| m (the robot stays on the floor, so the truth is 0)}. */
+std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed)
 {
 	std::mt19937 rng(seed);
 	const Scene scene = makeScene(rng, 300);
@@ -94,22 +95,23 @@ std::array<double, 3> createAndRecognize(double pixelNoise, uint32_t seed)
 		views.push_back(creationView(view(scene, path[i], rng, pixelNoise), path[i], i));
 	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, o);
 	EXPECT_TRUE(created.landmark) << created.why;
-	if (!created.landmark) return {1e9, 1e9, 1e9};
+	if (!created.landmark) return {1e9, 1e9, 1e9, 1e9};
 	EXPECT_TRUE(created.rotationFromImages);
 	EXPECT_GE(created.landmark->points.size(), 150u);
 	EXPECT_LT(created.landmark->reprojectionRms, 2 * pixelNoise + 0.01);
-	std::array<double, 3> worst{0, 0, 0};
+	std::array<double, 4> worst{0, 0, 0, 0};
 	for (const mrpt::poses::CPose2D& query : {mrpt::poses::CPose2D(1.0, 0.5, -10 * kDeg),
 			 mrpt::poses::CPose2D(-0.5, -0.6, 15 * kDeg), mrpt::poses::CPose2D(1.8, -0.2, 5 * kDeg)})
 	{
 		const auto m = recognizeLandmark(view(scene, query, rng, pixelNoise), *created.landmark, kMount, o);
 		EXPECT_TRUE(m) << query;
-		if (!m) return {1e9, 1e9, 1e9};
+		if (!m) return {1e9, 1e9, 1e9, 1e9};
 		const mrpt::poses::CPose2D truth = path.back() - query;  // landmark frame in the robot frame
 		EXPECT_GE(m->NPoints, 100);
 		worst[0] = std::max(worst[0], (m->landmarkInRobot - truth).norm());
 		worst[1] = std::max(worst[1], std::abs(mrpt::math::wrapToPi<double>(m->landmarkInRobot.phi() - truth.phi())));
 		worst[2] = std::max(worst[2], m->ProjErrRMS);
+		worst[3] = std::max(worst[3], std::abs(m->robotInLandmark.z()));
 	}
 	return worst;
 }
@@ -121,6 +123,7 @@ TEST(LandmarkPipeline, WithoutNoiseCreationAndRecognitionAreExact)
 	EXPECT_LT(worst[0], 0.002);
 	EXPECT_LT(worst[1], 0.02 * kDeg);
 	EXPECT_LT(worst[2], 0.05);
+	EXPECT_LT(worst[3], 0.002);
 }
 
 TEST(LandmarkPipeline, WithPixelNoiseForwardMotionLandmarksStayCloseToTheTruth)
@@ -128,11 +131,13 @@ TEST(LandmarkPipeline, WithPixelNoiseForwardMotionLandmarksStayCloseToTheTruth)
 	// 0.3 px noise. Views taken while driving towards the scene leave the
 	// depth of most points weakly determined (little parallax), and
 	// rotation trades against sideways translation (bas-relief ambiguity):
-	// errors measured here are up to ~11 cm and ~1.4 deg at 1-2 m.
+	// errors measured here are up to ~11 cm and ~1.4 deg at 1-2 m, and the
+	// robot's height in the landmark frame up to ~2.3 cm.
 	const auto worst = createAndRecognize(0.3, 7);
 	EXPECT_LT(worst[0], 0.2);
 	EXPECT_LT(worst[1], 2.5 * kDeg);
 	EXPECT_LT(worst[2], 2.5);
+	EXPECT_LT(worst[3], 0.06);
 }
 
 TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingElse)
@@ -156,6 +161,10 @@ TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingE
 	EXPECT_NEAR(m->landmarkInRobot.norm() / truth.norm(), 1.05, 0.002);
 	EXPECT_NEAR(std::atan2(m->landmarkInRobot.y(), m->landmarkInRobot.x()), std::atan2(truth.y(), truth.x()), 0.02 * kDeg);
 	EXPECT_NEAR(m->landmarkInRobot.phi(), truth.phi(), 0.02 * kDeg);
+	// The creation views share the camera's height, so the landmark is the
+	// true scene scaled about the camera: the robot's height in it stays 0
+	// (what makes the pre-filter's max_Height independent of the scale).
+	EXPECT_NEAR(m->robotInLandmark.z(), 0, 0.002);
 }
 
 TEST(LandmarkPipeline, UnrelatedViewsMakeNoLandmarkAndAreNotRecognized)
