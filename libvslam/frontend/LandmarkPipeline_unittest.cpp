@@ -84,11 +84,10 @@ namespace
  * forward path, recognizes it from three other poses and returns the worst
  * errors against the truth: {translation m, heading rad, ProjErrRMS px,
  * |Height| m (the robot stays on the floor, so the truth is 0)}. */
-std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed)
+std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed, const TVisualFrontEndOptions& o = {})
 {
 	std::mt19937 rng(seed);
 	const Scene scene = makeScene(rng, 300);
-	TVisualFrontEndOptions o;
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0.01, 2 * kDeg}, {0.4, 0.03, 4 * kDeg}};
 	std::vector<CreationView> views;
 	for (size_t i = 0; i < path.size(); i++)
@@ -138,6 +137,22 @@ TEST(LandmarkPipeline, WithPixelNoiseForwardMotionLandmarksStayCloseToTheTruth)
 	EXPECT_LT(worst[1], 2.5 * kDeg);
 	EXPECT_LT(worst[2], 2.5);
 	EXPECT_LT(worst[3], 0.06);
+}
+
+TEST(LandmarkPipeline, UsacRansacIsAsExactAndAsCloseAsTheClassicOne)
+{
+	TVisualFrontEndOptions o;
+	o.recognition_ransac = "usac";
+	const auto exact = createAndRecognize(0.0, 7, o);
+	EXPECT_LT(exact[0], 0.002);
+	EXPECT_LT(exact[1], 0.02 * kDeg);
+	EXPECT_LT(exact[2], 0.05);
+	EXPECT_LT(exact[3], 0.002);
+	const auto noisy = createAndRecognize(0.3, 7, o);
+	EXPECT_LT(noisy[0], 0.2);
+	EXPECT_LT(noisy[1], 2.5 * kDeg);
+	EXPECT_LT(noisy[2], 2.5);
+	EXPECT_LT(noisy[3], 0.06);
 }
 
 TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingElse)

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 using namespace vslam;
 
@@ -83,6 +85,28 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	setPredictedCovariance(m, F * fit.covariance * F.transpose());
 	return m;
 }
+/** RANSAC PnP by recognition_ransac; true if a pose was found. */
+bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Mat& K,
+	const TVisualFrontEndOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)
+{
+	constexpr double kConfidence = 0.999;
+	if (o.recognition_ransac == "classic")
+		return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, o.recognition_ransac_iterations,
+			static_cast<float>(o.recognition_ransac_px), kConfidence, inliers, cv::SOLVEPNP_AP3P);
+	if (o.recognition_ransac != "usac")
+		throw std::invalid_argument("unknown recognition_ransac '" + o.recognition_ransac + "' (classic | usac)");
+	cv::UsacParams p;
+	p.confidence = kConfidence;
+	p.isParallel = false;
+	p.maxIterations = o.recognition_ransac_iterations;
+	p.threshold = o.recognition_ransac_px;
+	p.sampler = cv::SAMPLING_UNIFORM;
+	p.score = cv::SCORE_METHOD_MSAC;
+	p.loMethod = cv::LOCAL_OPTIM_NULL;
+	p.randomGeneratorState = 0;  // the same pose for the same input, run after run
+	cv::Mat cameraMatrix = K.clone();  // an in-out argument of this overload
+	return cv::solvePnPRansac(object, pixels, cameraMatrix, cv::noArray(), rvec, tvec, inliers, p);
+}
 }  // namespace
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
@@ -102,9 +126,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const cv::Mat K(image.camera.K());
 	cv::Mat rvec, tvec;
 	std::vector<int> inliers;
-	const bool found = cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false,
-		o.recognition_ransac_iterations, static_cast<float>(o.recognition_ransac_px), 0.999, inliers,
-		cv::SOLVEPNP_AP3P);
+	const bool found = robustPnP(object, pixels, K, o, rvec, tvec, inliers);
 	if (!found || static_cast<int>(inliers.size()) < o.recognition_min_inliers) return std::nullopt;
 	std::vector<cv::Point3f> inObject;
 	std::vector<cv::Point2f> inPixels;

@@ -58,6 +58,11 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
+	{
+		static const std::vector<std::string> kinds{"classic", "usac"};
+		const size_t def = std::find(kinds.begin(), kinds.end(), recognition_ransac) - kinds.begin();
+		recognition_ransac = kinds[readChoice(c, s, "recognition_ransac", def, kinds)];
+	}
 	recognition_planar = readBool(c, s, "recognition_planar", recognition_planar);
 	recognition_max_std_xy =
 		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
@@ -130,6 +135,7 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
 	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
 	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC iterations");
+	c.write(s, "recognition_ransac", recognition_ransac, 30, 10, "PnP RANSAC: classic (solvePnPRansac, AP3P) | usac (OpenCV USAC, faster)");
 	c.write(s, "recognition_planar", recognition_planar, 30, 10,
 		"Refine the pose and count inliers with the robot on the floor plane (camera mount fixed)");
 	c.write(s, "recognition_min_inlier_ratio", recognition_min_inlier_ratio, 30, 10,

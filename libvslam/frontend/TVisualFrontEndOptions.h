@@ -72,6 +72,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double recognition_min_inlier_ratio = 0;
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
 	int recognition_ransac_iterations = 300;
+	/** RANSAC for the PnP pose: "classic" (OpenCV's solvePnPRansac, AP3P
+	 * minimal sets) or "usac" (OpenCV's USAC framework: P3P minimal sets,
+	 * MSAC score, uniform sampling with a fixed seed; about half the pose
+	 * time, results.md 9.15). */
+	std::string recognition_ransac = "classic";
 	/** Refine the PnP pose with the robot on the floor plane (x, y, theta in
 	 * the landmark frame, camera mount fixed) and count inliers of that pose;
 	 * false: the 6-DOF pose as solved. */
