@@ -153,6 +153,7 @@ TEST(LandmarkPipeline, UsacRansacIsAsExactAndAsCloseAsTheClassicOne)
 	EXPECT_LT(noisy[1], 2.5 * kDeg);
 	EXPECT_LT(noisy[2], 2.5);
 	EXPECT_LT(noisy[3], 0.06);
+	EXPECT_EQ(createAndRecognize(0.3, 7, o), noisy);  // its sampler's fixed seed: the same input, the same pose
 }
 
 TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingElse)
