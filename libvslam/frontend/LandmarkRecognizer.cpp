@@ -85,6 +85,7 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	setPredictedCovariance(m, F * fit.covariance * F.transpose());
 	return m;
 }
+
 /** RANSAC PnP by recognition_ransac; true if a pose was found. */
 bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Mat& K,
 	const TVisualFrontEndOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)

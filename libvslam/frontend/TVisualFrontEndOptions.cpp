@@ -18,6 +18,10 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	const auto readCount = [&](const char* key, int value, double lo, double hi) {
 		return static_cast<int>(readInt(c, s, key, value, Range::closed(lo, hi)));
 	};
+	const auto readWord = [&](const char* key, const std::string& value, const std::vector<std::string>& kinds) {
+		const size_t def = std::find(kinds.begin(), kinds.end(), value) - kinds.begin();
+		return kinds[readChoice(c, s, key, def, kinds)];
+	};
 	sift_features = readCount("sift_features", sift_features, 0, 100000);
 	sift_contrast_threshold =
 		readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
@@ -58,11 +62,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
-	{
-		static const std::vector<std::string> kinds{"classic", "usac"};
-		const size_t def = std::find(kinds.begin(), kinds.end(), recognition_ransac) - kinds.begin();
-		recognition_ransac = kinds[readChoice(c, s, "recognition_ransac", def, kinds)];
-	}
+	recognition_ransac = readWord("recognition_ransac", recognition_ransac, {"classic", "usac"});
 	recognition_planar = readBool(c, s, "recognition_planar", recognition_planar);
 	recognition_max_std_xy =
 		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
@@ -70,20 +70,12 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
-	{
-		static const std::vector<std::string> kinds{"kdtree", "flann"};
-		const size_t def = std::find(kinds.begin(), kinds.end(), search_index) - kinds.begin();
-		search_index = kinds[readChoice(c, s, "search_index", def, kinds)];
-	}
+	search_index = readWord("search_index", search_index, {"kdtree", "flann"});
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
 	search_flann_trees = readCount("search_flann_trees", search_flann_trees, 1, 16);
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
-	{
-		static const std::vector<std::string> kinds{"float", "uint8", "uint4", "projected"};
-		const size_t def = std::find(kinds.begin(), kinds.end(), descriptor_storage) - kinds.begin();
-		descriptor_storage = kinds[readChoice(c, s, "descriptor_storage", def, kinds)];
-	}
+	descriptor_storage = readWord("descriptor_storage", descriptor_storage, {"float", "uint8", "uint4", "projected"});
 	descriptor_dims = readCount("descriptor_dims", descriptor_dims, 4, 128);
 	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
 	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
