@@ -1,6 +1,7 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/Median.h>
 #include <libvslam/eval/ImageSequenceStats.h>
+#include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <mrpt/obs/CObservationImage.h>

@@ -43,8 +43,4 @@ class FeatureExtractor
 	cv::Ptr<cv::SIFT> m_sift;
 	bool m_upsample;
 };
-
-/** Ratio-test matches from `a` to `b` (index pairs), each `b` used once. */
-std::vector<std::pair<int, int>> matchDescriptors(
-	const cv::Mat& a, const cv::Mat& b, double ratio);
 }  // namespace vslam

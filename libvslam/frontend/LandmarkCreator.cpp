@@ -1,4 +1,5 @@
 #include <libvslam/frontend/BundleAdjustment.h>
+#include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/eigen.hpp>

@@ -1,4 +1,5 @@
 #include <libvslam/frontend/DescriptorCodec.h>
+#include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/PlanarPose.h>
 #include <libvslam/frontend/PoseAmbiguity.h>
