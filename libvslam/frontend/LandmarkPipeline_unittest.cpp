@@ -156,6 +156,21 @@ TEST(LandmarkPipeline, UsacRansacIsAsExactAndAsCloseAsTheClassicOne)
 	EXPECT_EQ(createAndRecognize(0.3, 7, o), noisy);  // its sampler's fixed seed: the same input, the same pose
 }
 
+TEST(LandmarkPipeline, RansacEarlyStopKeepsThePoseOfTheFullBudget)
+{
+	// With a good pose in the matches, RANSAC's own adaptive stop comes first:
+	// the early stop (a bound for failing candidates) changes nothing.
+	TVisualFrontEndOptions fullBudget;
+	fullBudget.recognition_ransac_early_stop = false;
+	ASSERT_TRUE(TVisualFrontEndOptions().recognition_ransac_early_stop);
+	for (const char* ransac : {"classic", "usac"})
+	{
+		TVisualFrontEndOptions earlyStop;
+		earlyStop.recognition_ransac = fullBudget.recognition_ransac = ransac;
+		EXPECT_EQ(createAndRecognize(0.3, 7, earlyStop), createAndRecognize(0.3, 7, fullBudget)) << ransac;
+	}
+}
+
 TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingElse)
 {
 	// Odometry says every step is 5% longer than it was: the landmark is 5%

@@ -3,6 +3,7 @@
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/PlanarPose.h>
 #include <libvslam/frontend/PoseAmbiguity.h>
+#include <libvslam/frontend/RansacIterations.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/wrap2pi.h>
 
@@ -92,15 +93,26 @@ bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Poi
 	const TVisualFrontEndOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)
 {
 	constexpr double kConfidence = 0.999;
+	int iterations = o.recognition_ransac_iterations;
+	if (o.recognition_ransac_early_stop)
+	{
+		const int points = static_cast<int>(object.size());
+		const int needed = std::max(o.recognition_min_inliers,
+			static_cast<int>(std::ceil(o.recognition_min_inlier_ratio * points)));
+		// AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side.
+		constexpr int kSampleSize = 4;
+		if (points >= kSampleSize)
+			iterations = std::min(iterations, ransacIterationsToFind(needed, points, kSampleSize, kConfidence));
+	}
 	if (o.recognition_ransac == "classic")
-		return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, o.recognition_ransac_iterations,
+		return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, iterations,
 			static_cast<float>(o.recognition_ransac_px), kConfidence, inliers, cv::SOLVEPNP_AP3P);
 	if (o.recognition_ransac != "usac")
 		throw std::invalid_argument("unknown recognition_ransac '" + o.recognition_ransac + "' (classic | usac)");
 	cv::UsacParams p;
 	p.confidence = kConfidence;
 	p.isParallel = false;
-	p.maxIterations = o.recognition_ransac_iterations;
+	p.maxIterations = iterations;
 	p.threshold = o.recognition_ransac_px;
 	p.sampler = cv::SAMPLING_UNIFORM;
 	p.score = cv::SCORE_METHOD_MSAC;

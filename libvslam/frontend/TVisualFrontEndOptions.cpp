@@ -62,6 +62,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
+	recognition_ransac_early_stop = readBool(c, s, "recognition_ransac_early_stop", recognition_ransac_early_stop);
 	recognition_ransac = readWord("recognition_ransac", recognition_ransac, {"classic", "usac"});
 	recognition_planar = readBool(c, s, "recognition_planar", recognition_planar);
 	recognition_max_std_xy =
@@ -126,7 +127,9 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_max_candidates", recognition_max_candidates, 30, 10, "Candidates tried per image");
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
 	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
-	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC iterations");
+	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC draw budget");
+	c.write(s, "recognition_ransac_early_stop", recognition_ransac_early_stop, 30, 10,
+		"Stop RANSAC once a pose with enough inliers would have been found (99.9%)");
 	c.write(s, "recognition_ransac", recognition_ransac, 30, 10, "PnP RANSAC: classic (solvePnPRansac, AP3P) | usac (OpenCV USAC, faster)");
 	c.write(s, "recognition_planar", recognition_planar, 30, 10,
 		"Refine the pose and count inliers with the robot on the floor plane (camera mount fixed)");

@@ -71,7 +71,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * inliers (a chance consensus among many wrong matches is a small share). */
 	double recognition_min_inlier_ratio = 0;
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
-	int recognition_ransac_iterations = 300;
+	int recognition_ransac_iterations = 300;  //!< RANSAC's draw budget
+	/** Stop the RANSAC, within that budget, once a pose with enough inliers
+	 * (recognition_min_inliers, recognition_min_inlier_ratio) would have been
+	 * drawn with its confidence (RansacIterations.h); false: the budget's
+	 * draws are spent on every candidate that fails. */
+	bool recognition_ransac_early_stop = true;
 	/** RANSAC for the PnP pose: "classic" (OpenCV's solvePnPRansac, AP3P
 	 * minimal sets) or "usac" (OpenCV's USAC framework: P3P minimal sets,
 	 * MSAC score, uniform sampling with a fixed seed; about half the pose
