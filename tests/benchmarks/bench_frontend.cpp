@@ -11,13 +11,21 @@
  *   bench_frontend --benchmark_filter='Frame/640/1000/' [--set vslam_frontend.KEY=VALUE ...]
  * Counters: frames/s (items_per_second) and ms per stage: features_ms,
  * search_ms, pose_ms; bytes_per_landmark (points + stored descriptors) and
- * index_bytes_per_landmark. */
+ * index_bytes_per_landmark.
+ *
+ * Also the descriptor matching of the pose stage alone, ours against
+ * OpenCV's brute-force matcher (the one it replaced), on a x b random
+ * SIFT-sized descriptors:
+ *   bench_frontend --benchmark_filter='Match'  */
 #include <benchmark/benchmark.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <tests/support/RoomRenderer.h>
+
+#include <opencv2/features2d.hpp>
 
 #include <chrono>
 #include <random>
@@ -139,7 +147,36 @@ void Frame(benchmark::State& state)
 	state.counters["bytes_per_landmark"] = double(scene->database->landmarkBytes()) / landmarks;
 	state.counters["index_bytes_per_landmark"] = double(scene->database->indexBytes()) / landmarks;
 }
+/** Random descriptors in SIFT's value range, a fixed seed. */
+cv::Mat randomDescriptors(int rows, uint64_t seed)
+{
+	cv::Mat d(rows, 128, CV_32F);
+	cv::RNG(seed).fill(d, cv::RNG::UNIFORM, 0, 150);
+	return d;
+}
+
+void MatchDescriptors(benchmark::State& state)
+{
+	const cv::Mat a = randomDescriptors(static_cast<int>(state.range(0)), 1);
+	const cv::Mat b = randomDescriptors(static_cast<int>(state.range(1)), 2);
+	for (auto _ : state) benchmark::DoNotOptimize(matchDescriptors(a, b, 0.8));
+}
+
+void MatchDescriptorsOpenCvBruteForce(benchmark::State& state)
+{
+	const cv::Mat a = randomDescriptors(static_cast<int>(state.range(0)), 1);
+	const cv::Mat b = randomDescriptors(static_cast<int>(state.range(1)), 2);
+	for (auto _ : state)
+	{
+		std::vector<std::vector<cv::DMatch>> knn;
+		cv::BFMatcher(cv::NORM_L2).knnMatch(a, b, knn, 2);
+		benchmark::DoNotOptimize(knn);
+	}
+}
 }  // namespace
+
+BENCHMARK(MatchDescriptors)->Args({600, 300})->Args({600, 600})->Unit(benchmark::kMillisecond);
+BENCHMARK(MatchDescriptorsOpenCvBruteForce)->Args({600, 300})->Args({600, 600})->Unit(benchmark::kMillisecond);
 
 BENCHMARK(Frame)
 	->ArgsProduct({{320, 640}, {10, 100, 1000, 5000}})
