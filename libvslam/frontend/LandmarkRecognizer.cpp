@@ -43,11 +43,17 @@ VisualMeasurement measurementFromPnP(const cv::Mat& rvec, const cv::Mat& tvec, c
 	return m;
 }
 
-/** recognition_min_inliers and recognition_min_inlier_ratio, for `inliers`
- * of `matches` descriptor matches. */
+/** The fewest PnP inliers among `matches` descriptor matches that
+ * recognition_min_inliers and recognition_min_inlier_ratio accept. */
+int leastAcceptedInliers(int matches, const TVisualFrontEndOptions& o)
+{
+	return std::max(o.recognition_min_inliers,
+		static_cast<int>(std::ceil(o.recognition_min_inlier_ratio * static_cast<double>(matches))));
+}
+
 bool enoughInliers(int inliers, int matches, const TVisualFrontEndOptions& o)
 {
-	return inliers >= o.recognition_min_inliers && inliers >= o.recognition_min_inlier_ratio * static_cast<double>(matches);
+	return inliers >= leastAcceptedInliers(matches, o);
 }
 
 /** Sets the predicted covariance of `m`'s (dx, dy, dtheta), and the
@@ -88,29 +94,31 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	return m;
 }
 
+constexpr double kRansacConfidence = 0.999;
+
+/** RANSAC draws for `matches` 2-D/3-D matches: recognition_ransac_iterations,
+ * or fewer with recognition_ransac_early_stop. */
+int ransacDraws(int matches, const TVisualFrontEndOptions& o)
+{
+	// AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side.
+	constexpr int kSampleSize = 4;
+	if (!o.recognition_ransac_early_stop || matches < kSampleSize) return o.recognition_ransac_iterations;
+	return std::min(o.recognition_ransac_iterations,
+		ransacIterationsToFind(leastAcceptedInliers(matches, o), matches, kSampleSize, kRansacConfidence));
+}
+
 /** RANSAC PnP by recognition_ransac; true if a pose was found. */
 bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Mat& K,
 	const TVisualFrontEndOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)
 {
-	constexpr double kConfidence = 0.999;
-	int iterations = o.recognition_ransac_iterations;
-	if (o.recognition_ransac_early_stop)
-	{
-		const int points = static_cast<int>(object.size());
-		const int needed = std::max(o.recognition_min_inliers,
-			static_cast<int>(std::ceil(o.recognition_min_inlier_ratio * points)));
-		// AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side.
-		constexpr int kSampleSize = 4;
-		if (points >= kSampleSize)
-			iterations = std::min(iterations, ransacIterationsToFind(needed, points, kSampleSize, kConfidence));
-	}
+	const int iterations = ransacDraws(static_cast<int>(object.size()), o);
 	if (o.recognition_ransac == "classic")
 		return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, iterations,
-			static_cast<float>(o.recognition_ransac_px), kConfidence, inliers, cv::SOLVEPNP_AP3P);
+			static_cast<float>(o.recognition_ransac_px), kRansacConfidence, inliers, cv::SOLVEPNP_AP3P);
 	if (o.recognition_ransac != "usac")
 		throw std::invalid_argument("unknown recognition_ransac '" + o.recognition_ransac + "' (classic | usac)");
 	cv::UsacParams p;
-	p.confidence = kConfidence;
+	p.confidence = kRansacConfidence;
 	p.isParallel = false;
 	p.maxIterations = iterations;
 	p.threshold = o.recognition_ransac_px;
