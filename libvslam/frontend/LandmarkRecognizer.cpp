@@ -95,16 +95,16 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 }
 
 constexpr double kRansacConfidence = 0.999;
+/** AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side. */
+constexpr int kRansacSampleSize = 4;
 
 /** RANSAC draws for `matches` 2-D/3-D matches: recognition_ransac_iterations,
  * or fewer with recognition_ransac_early_stop. */
 int ransacDraws(int matches, const TVisualFrontEndOptions& o)
 {
-	// AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side.
-	constexpr int kSampleSize = 4;
-	if (!o.recognition_ransac_early_stop || matches < kSampleSize) return o.recognition_ransac_iterations;
+	if (!o.recognition_ransac_early_stop || matches < kRansacSampleSize) return o.recognition_ransac_iterations;
 	return std::min(o.recognition_ransac_iterations,
-		ransacIterationsToFind(leastAcceptedInliers(matches, o), matches, kSampleSize, kRansacConfidence));
+		ransacIterationsToFind(leastAcceptedInliers(matches, o), matches, kRansacSampleSize, kRansacConfidence));
 }
 
 /** RANSAC PnP by recognition_ransac; true if a pose was found. */
@@ -129,6 +129,66 @@ bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Poi
 	cv::Mat cameraMatrix = K.clone();  // an in-out argument of this overload
 	return cv::solvePnPRansac(object, pixels, cameraMatrix, cv::noArray(), rvec, tvec, inliers, p);
 }
+
+/** The matches a pose reprojects within recognition_ransac_px, and the sum
+ * of their squared errors. */
+struct PoseConsensus
+{
+	std::vector<int> inliers;
+	double sumSquaredPx = 0;
+};
+
+PoseConsensus consensusOf(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels,
+	const cv::Mat& K, const cv::Mat& rvec, const cv::Mat& tvec, double thresholdPx)
+{
+	std::vector<cv::Point2f> projected;
+	cv::projectPoints(object, rvec, tvec, K, cv::noArray(), projected);
+	PoseConsensus c;
+	for (size_t i = 0; i < object.size(); i++)
+	{
+		const double e2 = std::pow(projected[i].x - pixels[i].x, 2) + std::pow(projected[i].y - pixels[i].y, 2);
+		if (e2 <= thresholdPx * thresholdPx)
+		{
+			c.sumSquaredPx += e2;
+			c.inliers.push_back(static_cast<int>(i));
+		}
+	}
+	return c;
+}
+
+/** Refines RANSAC's pose (rvec, tvec) on its inliers and counts the inliers
+ * again among all matches. With recognition_local_optimization, repeats
+ * while the inlier set grows: LO-RANSAC's local optimization (Chum, Matas
+ * and Kittler 2003), which recovers the consensus that pixel noise denies an
+ * all-inlier minimal sample. */
+PoseConsensus refineOnInliers(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels,
+	const cv::Mat& K, const TVisualFrontEndOptions& o, const std::vector<int>& ransacInliers, cv::Mat& rvec,
+	cv::Mat& tvec)
+{
+	constexpr int kMaxLocalSteps = 5;
+	const int steps = o.recognition_local_optimization ? kMaxLocalSteps : 1;
+	PoseConsensus best;
+	std::vector<int> current = ransacInliers;
+	for (int step = 0; step < steps && static_cast<int>(current.size()) >= kRansacSampleSize; step++)
+	{
+		std::vector<cv::Point3f> inObject;
+		std::vector<cv::Point2f> inPixels;
+		for (int i : current)
+		{
+			inObject.push_back(object[i]);
+			inPixels.push_back(pixels[i]);
+		}
+		cv::Mat r = rvec.clone(), t = tvec.clone();
+		cv::solvePnPRefineLM(inObject, inPixels, K, cv::noArray(), r, t);
+		PoseConsensus c = consensusOf(object, pixels, K, r, t, o.recognition_ransac_px);
+		if (step > 0 && c.inliers.size() <= best.inliers.size()) break;
+		rvec = r;
+		tvec = t;
+		best = std::move(c);
+		current = best.inliers;
+	}
+	return best;
+}
 }  // namespace
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
@@ -149,36 +209,17 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	cv::Mat rvec, tvec;
 	std::vector<int> inliers;
 	const bool found = robustPnP(object, pixels, K, o, rvec, tvec, inliers);
-	if (!found || static_cast<int>(inliers.size()) < o.recognition_min_inliers) return std::nullopt;
-	std::vector<cv::Point3f> inObject;
-	std::vector<cv::Point2f> inPixels;
-	for (int i : inliers)
-	{
-		inObject.push_back(object[i]);
-		inPixels.push_back(pixels[i]);
-	}
-	cv::solvePnPRefineLM(inObject, inPixels, K, cv::noArray(), rvec, tvec);
-	// Inliers again after the refinement, and their RMS error.
-	std::vector<cv::Point2f> projected;
-	cv::projectPoints(object, rvec, tvec, K, cv::noArray(), projected);
-	double sq = 0;
-	std::vector<int> refinedInliers;
-	for (size_t i = 0; i < object.size(); i++)
-	{
-		const double e2 = std::pow(projected[i].x - pixels[i].x, 2) + std::pow(projected[i].y - pixels[i].y, 2);
-		if (e2 <= o.recognition_ransac_px * o.recognition_ransac_px)
-		{
-			sq += e2;
-			refinedInliers.push_back(static_cast<int>(i));
-		}
-	}
+	const int leastToRefine = o.recognition_local_optimization ? kRansacSampleSize : o.recognition_min_inliers;
+	if (!found || static_cast<int>(inliers.size()) < leastToRefine) return std::nullopt;
+	const PoseConsensus fit = refineOnInliers(object, pixels, K, o, inliers, rvec, tvec);
+	const std::vector<int>& refinedInliers = fit.inliers;
 	const int n = static_cast<int>(refinedInliers.size());
 	if (!enoughInliers(n, static_cast<int>(matches.size()), o)) return std::nullopt;
 
 	VisualMeasurement m = measurementFromPnP(rvec, tvec, mount);
 	m.landmarkID = lm.id;
 	m.NPoints = n;
-	m.ProjErrRMS = std::sqrt(sq / n);
+	m.ProjErrRMS = std::sqrt(fit.sumSquaredPx / n);
 	m.matches = static_cast<int>(matches.size());
 	std::vector<cv::Point3f> inlierObject;
 	std::vector<cv::Point2f> inlierPixels;

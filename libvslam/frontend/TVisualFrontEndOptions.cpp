@@ -63,6 +63,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
 	recognition_ransac_early_stop = readBool(c, s, "recognition_ransac_early_stop", recognition_ransac_early_stop);
+	recognition_local_optimization =
+		readBool(c, s, "recognition_local_optimization", recognition_local_optimization);
 	recognition_ransac = readWord("recognition_ransac", recognition_ransac, {"classic", "usac"});
 	recognition_planar = readBool(c, s, "recognition_planar", recognition_planar);
 	recognition_max_std_xy =
@@ -130,6 +132,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC draw budget");
 	c.write(s, "recognition_ransac_early_stop", recognition_ransac_early_stop, 30, 10,
 		"Stop RANSAC once a pose with enough inliers would have been found (99.9%)");
+	c.write(s, "recognition_local_optimization", recognition_local_optimization, 30, 10,
+		"Refine the best RANSAC pose on its inliers while they grow, also when RANSAC found too few");
 	c.write(s, "recognition_ransac", recognition_ransac, 30, 10, "PnP RANSAC: classic (solvePnPRansac, AP3P) | usac (OpenCV USAC, faster)");
 	c.write(s, "recognition_planar", recognition_planar, 30, 10,
 		"Refine the pose and count inliers with the robot on the floor plane (camera mount fixed)");

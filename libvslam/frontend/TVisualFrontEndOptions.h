@@ -77,6 +77,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * drawn with its confidence (RansacIterations.h); false: the budget's
 	 * draws are spent on every candidate that fails. */
 	bool recognition_ransac_early_stop = true;
+	/** Refine RANSAC's best pose on its inliers and count them again, while
+	 * the set grows (LO-RANSAC's local optimization), also when RANSAC's own
+	 * count falls short; false: one refinement, and only of a pose RANSAC
+	 * already found with recognition_min_inliers. */
+	bool recognition_local_optimization = false;
 	/** RANSAC for the PnP pose: "classic" (OpenCV's solvePnPRansac, AP3P
 	 * minimal sets) or "usac" (OpenCV's USAC framework: P3P minimal sets,
 	 * MSAC score, uniform sampling with a fixed seed; about half the pose
