@@ -28,6 +28,14 @@ ImagesToMeasurementsResult vslam::replaceImagesWithMeasurements(
 		if (image->image.isExternallyStored() &&
 			!std::filesystem::is_regular_file(image->image.getExternalStorageFileAbsolutePath()))
 			throw InputError(what + ": file not found");
+		try
+		{
+			image->image.forceLoad();
+		}
+		catch (const std::exception& e)
+		{
+			throw InputError(what + ": cannot be read: " + exceptionText(e));
+		}
 		CVisualFrontEnd::Output out;
 		try
 		{
@@ -39,7 +47,8 @@ ImagesToMeasurementsResult vslam::replaceImagesWithMeasurements(
 		}
 		catch (const std::exception& e)
 		{
-			throw InputError(what + ": cannot be read: " + exceptionText(e));
+			// Not the input's fault: say where, and do not call it unreadable.
+			throw std::runtime_error(what + ": the front-end failed on it: " + exceptionText(e));
 		}
 		image->image.unload();  // external images: free the pixels again
 		r.images++;

@@ -182,6 +182,25 @@ std::optional<mrpt::poses::CPose2D> trueMeasurement(const vslam::Trajectory& tru
 }
 }  // namespace
 
+TEST(VisualPipeline, CorruptImageFileNamesTheImageAsUnreadable)
+{
+	TempDir dir;
+	const std::string rawlog = dir.file("ext.rawlog");
+	vslam::testing::RoomRawlogOptions o;
+	o.laps = 0.3;
+	o.externalImages = true;
+	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	std::ofstream(dir.file("ext_Images/img_5.png"), std::ios::trunc) << "not a PNG file";
+	for (const std::string& command :
+		{quoted(kBin + "vslam") + " " + quoted(writeIni(dir, rawlog, false)) + " --quiet --out " + quoted(dir.file("out")),
+			quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog"))})
+	{
+		const auto r = runCommand(command);
+		EXPECT_EQ(r.exitCode, 3) << r.output;
+		EXPECT_NE(r.output.find("img_5.png': cannot be read"), std::string::npos) << r.output;
+	}
+}
+
 TEST(VisualPipeline, OracleRawlogHasTheSameRecognitionsWithTheirTrueMeasurements)
 {
 	TempDir dir;
