@@ -130,6 +130,16 @@ bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Poi
 	return cv::solvePnPRansac(object, pixels, cameraMatrix, cv::noArray(), rvec, tvec, inliers, p);
 }
 
+/** The elements of `all` at `rows`, in that order. */
+template <typename T>
+std::vector<T> subset(const std::vector<T>& all, const std::vector<int>& rows)
+{
+	std::vector<T> out;
+	out.reserve(rows.size());
+	for (int i : rows) out.push_back(all[i]);
+	return out;
+}
+
 /** The matches a pose reprojects within recognition_ransac_px, and the sum
  * of their squared errors. */
 struct PoseConsensus
@@ -171,15 +181,8 @@ PoseConsensus refineOnInliers(const std::vector<cv::Point3f>& object, const std:
 	std::vector<int> current = ransacInliers;
 	for (int step = 0; step < steps && static_cast<int>(current.size()) >= kRansacSampleSize; step++)
 	{
-		std::vector<cv::Point3f> inObject;
-		std::vector<cv::Point2f> inPixels;
-		for (int i : current)
-		{
-			inObject.push_back(object[i]);
-			inPixels.push_back(pixels[i]);
-		}
 		cv::Mat r = rvec.clone(), t = tvec.clone();
-		cv::solvePnPRefineLM(inObject, inPixels, K, cv::noArray(), r, t);
+		cv::solvePnPRefineLM(subset(object, current), subset(pixels, current), K, cv::noArray(), r, t);
 		PoseConsensus c = consensusOf(object, pixels, K, r, t, o.recognition_ransac_px);
 		if (step > 0 && c.inliers.size() <= best.inliers.size()) break;
 		rvec = r;
@@ -221,13 +224,8 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(fit.sumSquaredPx / n);
 	m.matches = static_cast<int>(matches.size());
-	std::vector<cv::Point3f> inlierObject;
-	std::vector<cv::Point2f> inlierPixels;
-	for (int i : refinedInliers)
-	{
-		inlierObject.push_back(object[i]);
-		inlierPixels.push_back(pixels[i]);
-	}
+	const std::vector<cv::Point3f> inlierObject = subset(object, refinedInliers);
+	const std::vector<cv::Point2f> inlierPixels = subset(pixels, refinedInliers);
 	if (o.recognition_ambiguity_min_gap > 0)
 	{
 		const CameraPoseFit pose{cv::Vec3d(rvec), cv::Vec3d(tvec), m.ProjErrRMS};
