@@ -41,6 +41,18 @@ std::string writeIni(const TempDir& dir, const std::string& rawlog, bool startFr
 	return ini;
 }
 
+/** A short room rawlog (0.3 laps) with its images in files beside it,
+ * `ext_Images/img_N.png`. */
+std::string writeExternalImageRawlog(const TempDir& dir)
+{
+	const std::string rawlog = dir.file("ext.rawlog");
+	vslam::testing::RoomRawlogOptions o;
+	o.laps = 0.3;
+	o.externalImages = true;
+	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	return rawlog;
+}
+
 /** A number after "key:" in the run summary's `section:` block ("" if absent). */
 double summaryValue(const std::string& summary, const std::string& pattern)
 {
@@ -115,11 +127,7 @@ TEST(VisualPipeline, FrontEndAloneThenFilterEqualsOneRunAndRunsRepeatExactly)
 TEST(VisualPipeline, MissingImageFileNamesTheImageAndTheEntry)
 {
 	TempDir dir;
-	const std::string rawlog = dir.file("ext.rawlog");
-	vslam::testing::RoomRawlogOptions o;
-	o.laps = 0.3;
-	o.externalImages = true;
-	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	const std::string rawlog = writeExternalImageRawlog(dir);
 	fs::remove(dir.file("ext_Images/img_5.png"));
 	const auto r = runCommand(quoted(kBin + "vslam") + " " + quoted(writeIni(dir, rawlog, false)) + " --quiet --out " + quoted(dir.file("out")));
 	EXPECT_EQ(r.exitCode, 3) << r.output;
@@ -185,11 +193,7 @@ std::optional<mrpt::poses::CPose2D> trueMeasurement(const vslam::Trajectory& tru
 TEST(VisualPipeline, CorruptImageFileNamesTheImageAsUnreadable)
 {
 	TempDir dir;
-	const std::string rawlog = dir.file("ext.rawlog");
-	vslam::testing::RoomRawlogOptions o;
-	o.laps = 0.3;
-	o.externalImages = true;
-	vslam::testing::writeRoomImageRawlog(rawlog, o);
+	const std::string rawlog = writeExternalImageRawlog(dir);
 	std::ofstream(dir.file("ext_Images/img_5.png"), std::ios::trunc) << "not a PNG file";
 	for (const std::string& command :
 		{quoted(kBin + "vslam") + " " + quoted(writeIni(dir, rawlog, false)) + " --quiet --out " + quoted(dir.file("out")),
