@@ -412,35 +412,40 @@ TEST(LandmarkPipeline, LocalOptimizationRecoversTheConsensusThatPixelNoiseDenies
 	// pose from four noisy points often counts fewer than 12. Refining it on
 	// its inliers until they stop growing finds the rest; a single
 	// refinement of a pose RANSAC already accepted cannot.
-	TVisualFrontEndOptions once;
-	once.recognition_local_optimization = false;
-	TVisualFrontEndOptions local = once;
-	local.recognition_local_optimization = true;
 	const mrpt::poses::CPose2D query(1.0, 0.3, 5 * kDeg);
 	const mrpt::poses::CPose2D truth = mrpt::poses::CPose2D() - query;
-	int recognizedOnce = 0, recognizedLocal = 0;
-	for (uint32_t seed = 1; seed <= 60; seed++)
+	for (const char* ransac : {"classic", "usac"})
 	{
-		std::mt19937 rng(seed);
-		const Scene scene = makeScene(rng, 100);
-		const auto [lm, image] = landmarkAndQuery(scene, query, 14, 26, 1.3, rng);
-		ASSERT_EQ(lm.points.size(), 40u);
-		const auto a = recognizeLandmark(image, lm, kMount, once);
-		const auto b = recognizeLandmark(image, lm, kMount, local);
-		if (a)
+		TVisualFrontEndOptions once;
+		once.recognition_ransac = ransac;
+		once.recognition_local_optimization = false;
+		TVisualFrontEndOptions local = once;
+		local.recognition_local_optimization = true;
+		int recognizedOnce = 0, recognizedLocal = 0;
+		for (uint32_t seed = 1; seed <= 60; seed++)
 		{
-			recognizedOnce++;
-			ASSERT_TRUE(b) << "seed " << seed;  // the same RANSAC, then at least as many inliers
-			EXPECT_GE(b->NPoints, a->NPoints) << "seed " << seed;
+			std::mt19937 rng(seed);
+			const Scene scene = makeScene(rng, 100);
+			const auto [lm, image] = landmarkAndQuery(scene, query, 14, 26, 1.3, rng);
+			ASSERT_EQ(lm.points.size(), 40u);
+			const auto a = recognizeLandmark(image, lm, kMount, once);
+			const auto b = recognizeLandmark(image, lm, kMount, local);
+			if (a)
+			{
+				recognizedOnce++;
+				ASSERT_TRUE(b) << ransac << ", seed " << seed;  // the same RANSAC, then at least as many inliers
+				EXPECT_GE(b->NPoints, a->NPoints) << ransac << ", seed " << seed;
+			}
+			if (!b) continue;
+			recognizedLocal++;
+			EXPECT_LT((b->landmarkInRobot - truth).norm(), 0.15) << ransac << ", seed " << seed;
+			EXPECT_LT(std::abs(mrpt::math::wrapToPi(b->landmarkInRobot.phi() - truth.phi())), 2 * kDeg)
+				<< ransac << ", seed " << seed;
 		}
-		if (!b) continue;
-		recognizedLocal++;
-		EXPECT_LT((b->landmarkInRobot - truth).norm(), 0.15) << "seed " << seed;
-		EXPECT_LT(std::abs(mrpt::math::wrapToPi(b->landmarkInRobot.phi() - truth.phi())), 2 * kDeg) << "seed " << seed;
+		EXPECT_GT(recognizedLocal, recognizedOnce) << ransac;
+		std::cout << ransac << " RANSAC, recognized of 60: " << recognizedOnce << " with one refinement, "
+				  << recognizedLocal << " with local optimization\n";
 	}
-	EXPECT_GT(recognizedLocal, recognizedOnce);
-	std::cout << "recognized of 60: " << recognizedOnce << " with one refinement, " << recognizedLocal
-			  << " with local optimization\n";
 }
 
 TEST(LandmarkPipeline, LocalOptimizationMakesNoRecognitionFromWrongMatchesAlone)
