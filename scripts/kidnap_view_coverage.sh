@@ -1,7 +1,7 @@
 #!/bin/bash
 # Did the map cover what a kidnapped robot saw? (doc/results.md 9.17)
 #
-# For each rendered kidnap rawlog of a batch (BATCH_OUT/kidnap/data_seed*/),
+# For each rendered kidnap rawlog of a batch (BATCH_OUT/SCENARIO/data_seed*/),
 # runs the front-end with --ground-truth once, places every landmark built
 # before the kidnap at its true frame (the robot's true pose at its first
 # measurement composed with that measurement's true relative pose), and
@@ -11,13 +11,13 @@
 # (a landmark is a view: it is recognized from near its frame, looking the
 # way it looked). Both are 999 where no landmark qualifies.
 #
-# usage: scripts/kidnap_view_coverage.sh BATCH_OUT WORK_DIR [KIDNAP_TIME_S=240]
+# usage: scripts/kidnap_view_coverage.sh BATCH_OUT WORK_DIR [KIDNAP_TIME_S=240] [SCENARIO=kidnap]
 set -euo pipefail
-[ $# -ge 2 ] || { echo "usage: $0 BATCH_OUT WORK_DIR [KIDNAP_TIME_S]" >&2; exit 2; }
-out=$1 work=$2 kidnap=${3:-240}
+[ $# -ge 2 ] || { echo "usage: $0 BATCH_OUT WORK_DIR [KIDNAP_TIME_S] [SCENARIO]" >&2; exit 2; }
+out=$1 work=$2 kidnap=${3:-240} scenario=${4:-kidnap}
 root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$work"
-for d in "$out"/kidnap/data_seed*; do
+for d in "$out/$scenario"/data_seed*; do
   seed=${d##*data_seed}
   csv=$work/seed$seed.csv
   [ -s "$csv" ] || "$root/build/bin/vslam-frontend" "$d/sim.rawlog" "$work/seed$seed.rawlog" \
