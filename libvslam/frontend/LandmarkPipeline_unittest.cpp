@@ -10,6 +10,7 @@
 
 #include <array>
 #include <iostream>
+#include <optional>
 #include <random>
 
 #include <mrpt/math/wrap2pi.h>
@@ -42,6 +43,18 @@ Scene makeScene(std::mt19937& rng, int n)
 	return s;
 }
 
+/** Where `camera` sees the world point `p` in its 640 x 480 image; empty if
+ * it is behind, nearer than 0.5 m or outside. */
+std::optional<cv::Point2d> pixelInView(const mrpt::poses::CPose3D& camera, const cv::Point3d& p)
+{
+	double x, y, z;
+	camera.inverseComposePoint(p.x, p.y, p.z, x, y, z);
+	if (z < 0.5) return std::nullopt;
+	const cv::Point2d px = kCamera.project({x, y, z});
+	if (px.x < 0 || px.y < 0 || px.x >= 640 || px.y >= 480) return std::nullopt;
+	return px;
+}
+
 /** What the camera on a robot at `robot` sees of the scene. */
 ImageFeatures view(const Scene& s, const mrpt::poses::CPose2D& robot, std::mt19937& rng, double pixelNoise)
 {
@@ -52,12 +65,9 @@ ImageFeatures view(const Scene& s, const mrpt::poses::CPose2D& robot, std::mt199
 	std::vector<int> rows;
 	for (size_t i = 0; i < s.points.size(); i++)
 	{
-		double x, y, z;
-		camera.inverseComposePoint(s.points[i].x, s.points[i].y, s.points[i].z, x, y, z);
-		if (z < 0.5) continue;
-		const cv::Point2d px = kCamera.project({x, y, z});
-		if (px.x < 0 || px.y < 0 || px.x >= 640 || px.y >= 480) continue;
-		f.pixels.emplace_back(static_cast<float>(px.x + pixelNoise * g(rng)), static_cast<float>(px.y + pixelNoise * g(rng)));
+		const auto px = pixelInView(camera, s.points[i]);
+		if (!px) continue;
+		f.pixels.emplace_back(static_cast<float>(px->x + pixelNoise * g(rng)), static_cast<float>(px->y + pixelNoise * g(rng)));
 		rows.push_back(static_cast<int>(i));
 	}
 	f.descriptors = cv::Mat(static_cast<int>(rows.size()), 128, CV_32F);
@@ -384,14 +394,12 @@ std::pair<VisualLandmarkModel, ImageFeatures> landmarkAndQuery(const Scene& s, c
 	const mrpt::poses::CPose3D camera = mrpt::poses::CPose3D(robot) + kMount;
 	for (size_t i = 0; i < s.points.size() && static_cast<int>(rows.size()) < inliers + outliers; i++)
 	{
-		double x, y, z;
-		camera.inverseComposePoint(s.points[i].x, s.points[i].y, s.points[i].z, x, y, z);
-		const cv::Point2d px = kCamera.project({x, y, z});
 		if (static_cast<int>(rows.size()) < inliers)
 		{
-			if (z < 0.5 || px.x < 0 || px.y < 0 || px.x >= 640 || px.y >= 480) continue;
+			const auto px = pixelInView(camera, s.points[i]);
+			if (!px) continue;
 			f.pixels.emplace_back(
-				static_cast<float>(px.x + pixelNoise * g(rng)), static_cast<float>(px.y + pixelNoise * g(rng)));
+				static_cast<float>(px->x + pixelNoise * g(rng)), static_cast<float>(px->y + pixelNoise * g(rng)));
 		}
 		else
 			f.pixels.emplace_back(640 * u(rng), 480 * u(rng));
