@@ -1,6 +1,6 @@
 /** Camera images through the front-end and the filter, as users run it:
  * vslam on an image rawlog in one run, vslam-frontend alone, determinism
- * with the front-end in the loop, and a missing image. Images come from
+ * with the front-end in the loop, and a missing or corrupt image. Images come from
  * the textured-room fixture (tests/support/RoomImageRawlog.h). */
 #include <gtest/gtest.h>
 #include <libvslam/eval/Trajectory.h>
