@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 using namespace vslam;
 
@@ -16,8 +17,10 @@ LandmarkScaleTrack::LandmarkScaleTrack(double creationBaseline, const TScaleRefi
 {
 	if (!(creationBaseline > 0) || !(settings.odometrySigma > 0))
 		throw std::invalid_argument("LandmarkScaleTrack: baseline and odometry sigma must be positive");
-	m_information = creationBaseline / (settings.odometrySigma * settings.odometrySigma);
-	m_weightedSum = m_information;
+	m_fixedInformation = creationBaseline / (settings.odometrySigma * settings.odometrySigma);
+	m_fixedWeightedSum = m_fixedInformation;
+	m_information = m_fixedInformation;
+	m_weightedSum = m_fixedWeightedSum;
 }
 
 double LandmarkScaleTrack::scaleErrorStd() const { return 1 / std::sqrt(m_information); }
@@ -52,27 +55,80 @@ double LandmarkScaleTrack::addSighting(const ScaleSighting& s)
 	const double visX = now.cameraInLandmark.x - m_anchor->cameraInLandmark.x;
 	const double visY = now.cameraInLandmark.y - m_anchor->cameraInLandmark.y;
 
-	const double k = scaleError();
-	const double variance = m_anchor->stdPosition * m_anchor->stdPosition + now.stdPosition * now.stdPosition +
-		k * k * m_settings.odometrySigma * m_settings.odometrySigma * travel;
-	const double rx = visX - k * odoX, ry = visY - k * odoY;
-	// The gate also allows for the uncertainty of k itself.
-	const double gateVariance = variance + (odoX * odoX + odoY * odoY) / m_information;
+	Pair pair;
+	pair.vv = visX * visX + visY * visY;
+	pair.vo = visX * odoX + visY * odoY;
+	pair.oo = odoX * odoX + odoY * odoY;
+	pair.sightingsVariance = m_anchor->stdPosition * m_anchor->stdPosition + now.stdPosition * now.stdPosition;
+	pair.travel = travel;
 	m_anchor = now;
-	if (!(variance > 0) || (rx * rx + ry * ry) / gateVariance > kGate99 || !std::isfinite(rx + ry))
+	if (!std::isfinite(pair.vv + pair.vo + pair.oo) || !(pair.variance(scaleError(), m_settings.odometrySigma) > 0))
 	{
+		m_foldedRejected++;  // measures nothing; never judged again
 		m_rejected++;
 		return 1;
 	}
-	const double information = m_information + (odoX * odoX + odoY * odoY) / variance;
-	const double weightedSum = m_weightedSum + (visX * odoX + visY * odoY) / variance;
-	if (!(weightedSum > 0))
+	if (m_pairs.size() == kJudgedPairs)
 	{
-		m_rejected++;
-		return 1;
+		// The oldest leaves the judged window: kept as last judged.
+		const Pair& oldest = m_pairs.front();
+		const double variance = oldest.variance(scaleError(), m_settings.odometrySigma);
+		if (oldest.used && m_fixedWeightedSum + oldest.vo / variance > 0)
+		{
+			m_fixedInformation += oldest.oo / variance;
+			m_fixedWeightedSum += oldest.vo / variance;
+			m_foldedUsed++;
+		}
+		else
+			m_foldedRejected++;
+		m_pairs.erase(m_pairs.begin());
 	}
-	m_used++;
-	m_information = information;
-	m_weightedSum = weightedSum;
+	m_pairs.push_back(pair);
+	estimate();
 	return appliedFactor() / applied;
+}
+
+void LandmarkScaleTrack::estimate()
+{
+	const double kBefore = scaleError();
+	std::vector<double> variance(m_pairs.size());
+	for (size_t i = 0; i < m_pairs.size(); i++)
+	{
+		variance[i] = m_pairs[i].variance(kBefore, m_settings.odometrySigma);
+		m_pairs[i].used = true;
+	}
+	for (;;)
+	{
+		double information = m_fixedInformation, weightedSum = m_fixedWeightedSum;
+		for (size_t i = 0; i < m_pairs.size(); i++)
+			if (m_pairs[i].used)
+			{
+				information += m_pairs[i].oo / variance[i];
+				weightedSum += m_pairs[i].vo / variance[i];
+			}
+		// The worst pair against the estimate without it.
+		double worst = -1;
+		size_t worstAt = m_pairs.size();
+		for (size_t i = 0; i < m_pairs.size(); i++)
+		{
+			if (!m_pairs[i].used) continue;
+			const Pair& p = m_pairs[i];
+			const double othersInformation = information - p.oo / variance[i];
+			const double k = (weightedSum - p.vo / variance[i]) / othersInformation;
+			const double residual = std::max(0.0, p.vv - 2 * k * p.vo + k * k * p.oo);
+			const double chi2 = residual / (variance[i] + p.oo / othersInformation);
+			if (chi2 > worst) worst = chi2, worstAt = i;
+		}
+		// A non-positive estimate is no scale: drop the worst pair too.
+		if (worstAt < m_pairs.size() && (worst > kGate99 || !(weightedSum > 0)))
+		{
+			m_pairs[worstAt].used = false;
+			continue;
+		}
+		m_information = information;
+		m_weightedSum = weightedSum;
+		break;
+	}
+	m_used = m_foldedUsed, m_rejected = m_foldedRejected;
+	for (const Pair& p : m_pairs) (p.used ? m_used : m_rejected)++;
 }

@@ -25,13 +25,24 @@
  * Pairs are chained (each sighting is the next pair's start) so their
  * odometry noise is independent; a pair is formed once the robot has
  * travelled scale_pair_min_travel (short pairs measure little), and not
- * over more than scale_pair_max_travel (odometry drift). A pair whose
- * residual is beyond the 99% gate of its variance (with that of k; a wrong recognition at
- * either end) is left out and the chain restarts at the newer sighting.
+ * over more than scale_pair_max_travel (odometry drift).
+ *
+ * A wrong or poor recognition at either end makes a wrong pair. Every pair
+ * is judged again whenever one is added, against the estimate from the
+ * prior and the other pairs in it (leave one out): the worst beyond the 99%
+ * gate of its variance (with that of the estimate) is left out and the rest
+ * judged again, until none is. So a wrong pair that the uncertain prior
+ * alone could not tell apart (the first, often the longest) is dropped as
+ * soon as later pairs disagree with it, and a pair left out comes back
+ * when the estimate moves towards it. The most recent kJudgedPairs pairs
+ * are kept for this; older ones are folded into the prior as they were
+ * last judged, so a landmark's memory stays bounded.
  */
 #include <mrpt/math/TPoint2D.h>
 
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 namespace vslam
 {
@@ -76,14 +87,40 @@ class LandmarkScaleTrack
 	double scaleErrorStd() const;
 	/** The factor the landmark's lengths carry now, relative to creation. */
 	double appliedFactor() const { return 1 / scaleError(); }
+	/** Pairs in the estimate, and pairs left out of it (as last judged). */
 	int pairsUsed() const { return m_used; }
 	int pairsRejected() const { return m_rejected; }
+	/** Heap memory held (the pairs kept for judging). */
+	size_t bytes() const { return m_pairs.capacity() * sizeof(Pair); }
+
+	/** Pairs judged again whenever one is added. */
+	static constexpr size_t kJudgedPairs = 16;
 
    private:
+	/** A pair as the estimate needs it: v and o (landmark units as built,
+	 * metres) by their products, and the variance's parts. */
+	struct Pair
+	{
+		double vv = 0, vo = 0, oo = 0;  //!< <v, v>, <v, o>, <o, o>
+		double sightingsVariance = 0;  //!< 2 sigma_v^2 (both ends)
+		double travel = 0;  //!< m
+		bool used = false;  //!< in the estimate, as last judged
+		double variance(double k, double odometrySigma) const
+		{
+			return sightingsVariance + k * k * odometrySigma * odometrySigma * travel;
+		}
+	};
+	/** Judges every kept pair again (worst first) and sets the estimate. */
+	void estimate();
+
 	TScaleRefinementSettings m_settings;
 	/** The previous sighting, positions in the units as built. */
 	std::optional<ScaleSighting> m_anchor;
-	double m_information = 1, m_weightedSum = 1;  //!< the prior k = 1
-	int m_used = 0, m_rejected = 0;
+	/** The prior k = 1 and the pairs folded into it. */
+	double m_fixedInformation = 1, m_fixedWeightedSum = 1;
+	std::vector<Pair> m_pairs;  //!< the most recent, oldest first
+	double m_information = 1, m_weightedSum = 1;  //!< the estimate: fixed part and used pairs
+	int m_used = 0, m_rejected = 0;  //!< of the pairs kept and folded
+	int m_foldedUsed = 0, m_foldedRejected = 0;
 };
 }  // namespace vslam

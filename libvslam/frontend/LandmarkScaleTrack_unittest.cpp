@@ -21,8 +21,10 @@ struct DriveSettings
 	double odometrySigma = 0.05;  //!< m / sqrt(m)
 	double visualSigma = 0.02;  //!< m
 	double step = 0.1;  //!< m between sightings
+	double firstStep = 0.1;  //!< m between the first two sightings
 	int sightings = 40;
-	int outlierAt = -1;  //!< this sighting's solve is 1 m off
+	int outlierAt = -1;  //!< this sighting's solve is outlierOffset off
+	double outlierOffset = 1.0;  //!< m, along the landmark frame's x
 	double noise = 1;  //!< scales the noise drawn (the stated sigmas stay)
 };
 
@@ -50,18 +52,18 @@ DriveResult drive(const DriveSettings& d, unsigned seed)
 	{
 		if (i > 0)
 		{
-			const CPose2D move(d.step, 0, 0.03);
-			truth = truth + move;
-			const double noise = d.noise * d.odometrySigma * std::sqrt(d.step);
-			odometry = odometry + CPose2D(d.step + noise * unit(rng), noise * unit(rng), 0.03);
-			travelled += d.step;
+			const double step = i == 1 ? d.firstStep : d.step;
+			truth = truth + CPose2D(step, 0, 0.03);
+			const double noise = d.noise * d.odometrySigma * std::sqrt(step);
+			odometry = odometry + CPose2D(step + noise * unit(rng), noise * unit(rng), 0.03);
+			travelled += step;
 		}
 		const CPose2D trueInLandmark = truth - landmarkInWorld;
 		ScaleSighting s;
 		const double a = r.track.appliedFactor() * d.trueScaleError;  // the landmark's current units
 		s.cameraInLandmark = {a * trueInLandmark.x() + d.noise * d.visualSigma * unit(rng),
 			a * trueInLandmark.y() + d.noise * d.visualSigma * unit(rng)};
-		if (i == d.outlierAt) s.cameraInLandmark.x += 1.0;
+		if (i == d.outlierAt) s.cameraInLandmark.x += d.outlierOffset;
 		s.headingInLandmark = trueInLandmark.phi();
 		s.stdPosition = d.visualSigma;
 		s.cameraInOdometry = {odometry.x(), odometry.y()};
@@ -137,6 +139,49 @@ TEST(LandmarkScaleTrack, AWrongRecognitionIsGatedOut)
 	EXPECT_EQ(clean.track.pairsRejected(), 0);
 	EXPECT_NEAR(withOutlier.track.scaleError(), clean.track.scaleError(), 2 * clean.track.scaleErrorStd());
 	EXPECT_LT(std::abs(withOutlier.track.scaleError() - d.trueScaleError), 3.5 * withOutlier.track.scaleErrorStd());
+}
+
+TEST(LandmarkScaleTrack, AWrongFirstPairIsDroppedOnceLaterPairsDisagree)
+{
+	// The first sighting is 0.5 m off and the second comes 1.8 m later: the
+	// first pair is long, so it outweighs the prior, and k is still so
+	// uncertain (the prior's 9%) that its gate cannot tell it is wrong.
+	DriveSettings d;
+	d.outlierAt = 0;
+	d.outlierOffset = 0.5;
+	d.firstStep = 1.8;
+	DriveSettings firstPairOnly = d;
+	firstPairOnly.sightings = 2;
+	DriveSettings clean = d;
+	clean.outlierAt = -1;
+	for (unsigned seed = 1; seed <= 10; seed++)
+	{
+		const auto first = drive(firstPairOnly, seed);
+		EXPECT_EQ(first.track.pairsUsed(), 1) << "seed " << seed;
+		EXPECT_GT(std::abs(first.track.scaleError() - d.trueScaleError), 0.1) << "seed " << seed;
+		// The later pairs disagree with it: it is left out in the end.
+		const auto r = drive(d, seed);
+		const auto reference = drive(clean, seed);
+		EXPECT_GE(r.track.pairsRejected(), 1) << "seed " << seed;
+		EXPECT_LT(std::abs(r.track.scaleError() - d.trueScaleError), 3.5 * r.track.scaleErrorStd()) << "seed " << seed;
+		EXPECT_NEAR(r.track.scaleError(), reference.track.scaleError(), 2 * reference.track.scaleErrorStd())
+			<< "seed " << seed;
+		EXPECT_NEAR(r.productOfFactors, r.track.appliedFactor(), 1e-12);
+	}
+}
+
+TEST(LandmarkScaleTrack, PairsPastTheJudgedWindowKeepTheirVerdict)
+{
+	// 200 sightings 0.1 m apart: about 60 pairs, more than the window.
+	DriveSettings d;
+	d.sightings = 200;
+	d.outlierAt = 20;
+	const auto r = drive(d, 4);
+	EXPECT_GT(static_cast<size_t>(r.track.pairsUsed() + r.track.pairsRejected()), LandmarkScaleTrack::kJudgedPairs);
+	EXPECT_GE(r.track.pairsRejected(), 1);  // the outlier's, folded as rejected
+	EXPECT_LE(r.track.bytes(), LandmarkScaleTrack::kJudgedPairs * 64);
+	EXPECT_LT(std::abs(r.track.scaleError() - d.trueScaleError), 3.5 * r.track.scaleErrorStd());
+	EXPECT_NEAR(r.productOfFactors, r.track.appliedFactor(), 1e-12);
 }
 
 TEST(LandmarkScaleTrack, SightingsTooFarApartFormNoPair)

@@ -30,11 +30,12 @@ struct VisualLandmarkModel
 	/** Its scale, refined from later sightings (scale_refinement). */
 	LandmarkScaleTrack scale;
 
-	/** Bytes this landmark takes in memory (points, descriptors, fields). */
+	/** Bytes this landmark takes in memory (points, descriptors, fields,
+	 * the scale track's pairs). */
 	size_t bytes() const
 	{
 		return sizeof(*this) + points.size() * sizeof(cv::Point3f) +
-			descriptors.total() * descriptors.elemSize();
+			descriptors.total() * descriptors.elemSize() + scale.bytes();
 	}
 };
 }  // namespace vslam
