@@ -68,24 +68,25 @@ double LandmarkScaleTrack::addSighting(const ScaleSighting& s)
 		m_rejected++;
 		return 1;
 	}
-	if (m_pairs.size() == kJudgedPairs)
-	{
-		// The oldest leaves the judged window: kept as last judged.
-		const Pair& oldest = m_pairs.front();
-		const double variance = oldest.variance(scaleError(), m_settings.odometrySigma);
-		if (oldest.used && m_fixedWeightedSum + oldest.vo / variance > 0)
-		{
-			m_fixedInformation += oldest.oo / variance;
-			m_fixedWeightedSum += oldest.vo / variance;
-			m_foldedUsed++;
-		}
-		else
-			m_foldedRejected++;
-		m_pairs.erase(m_pairs.begin());
-	}
+	if (m_pairs.size() == kJudgedPairs) foldOldestPair();
 	m_pairs.push_back(pair);
 	estimate();
 	return appliedFactor() / applied;
+}
+
+void LandmarkScaleTrack::foldOldestPair()
+{
+	const Pair& oldest = m_pairs.front();
+	const double variance = oldest.variance(scaleError(), m_settings.odometrySigma);
+	if (oldest.used && m_fixedWeightedSum + oldest.vo / variance > 0)
+	{
+		m_fixedInformation += oldest.oo / variance;
+		m_fixedWeightedSum += oldest.vo / variance;
+		m_foldedUsed++;
+	}
+	else
+		m_foldedRejected++;
+	m_pairs.erase(m_pairs.begin());
 }
 
 void LandmarkScaleTrack::estimate()

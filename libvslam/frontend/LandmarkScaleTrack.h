@@ -110,7 +110,11 @@ class LandmarkScaleTrack
 			return sightingsVariance + k * k * odometrySigma * odometrySigma * travel;
 		}
 	};
-	/** Judges every kept pair again (worst first) and sets the estimate. */
+	/** The oldest pair leaves the judged window, into the fixed part if it
+	 * was in the estimate. */
+	void foldOldestPair();
+	/** Judges every kept pair again (worst first) and sets the estimate.
+	 * The pairs' variances take k as it was before. */
 	void estimate();
 
 	TScaleRefinementSettings m_settings;
