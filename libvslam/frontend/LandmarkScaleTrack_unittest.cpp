@@ -170,6 +170,29 @@ TEST(LandmarkScaleTrack, AWrongFirstPairIsDroppedOnceLaterPairsDisagree)
 	}
 }
 
+TEST(LandmarkScaleTrack, ARightPairTheEstimateWasNotReadyForComesBack)
+{
+	// A landmark 35% too large, sighted without noise (the stated sigmas
+	// stay): the first pair, 1.8 m long, is right but so far from the prior
+	// (k = 1 +- 9%) that the prior's gate leaves it out. The short pairs
+	// after it move the estimate towards the truth; then the first pair
+	// fits, and it joins the estimate.
+	DriveSettings d;
+	d.trueScaleError = 1.35;
+	d.firstStep = 1.8;
+	d.noise = 0;
+	DriveSettings firstPairOnly = d;
+	firstPairOnly.sightings = 2;
+	const auto first = drive(firstPairOnly, 1);
+	EXPECT_EQ(first.track.pairsUsed(), 0);
+	EXPECT_EQ(first.track.pairsRejected(), 1);
+	EXPECT_EQ(first.track.scaleError(), 1.0);
+	const auto r = drive(d, 1);
+	EXPECT_EQ(r.track.pairsRejected(), 0);
+	EXPECT_GT(r.track.pairsUsed(), 10);
+	EXPECT_LT(std::abs(r.track.scaleError() - d.trueScaleError), 3.5 * r.track.scaleErrorStd());
+}
+
 TEST(LandmarkScaleTrack, PairsPastTheJudgedWindowKeepTheirVerdict)
 {
 	// 200 sightings 0.1 m apart: about 60 pairs, more than the window.
