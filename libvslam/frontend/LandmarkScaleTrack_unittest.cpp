@@ -73,6 +73,13 @@ DriveResult drive(const DriveSettings& d, unsigned seed)
 	}
 	return r;
 }
+
+/** The same drive cut after its second sighting: its first pair alone. */
+DriveSettings firstPairOf(DriveSettings d)
+{
+	d.sightings = 2;
+	return d;
+}
 }  // namespace
 
 TEST(LandmarkScaleTrack, FindsTheScaleErrorWithinItsStatedUncertainty)
@@ -150,13 +157,11 @@ TEST(LandmarkScaleTrack, AWrongFirstPairIsDroppedOnceLaterPairsDisagree)
 	d.outlierAt = 0;
 	d.outlierOffset = 0.5;
 	d.firstStep = 1.8;
-	DriveSettings firstPairOnly = d;
-	firstPairOnly.sightings = 2;
 	DriveSettings clean = d;
 	clean.outlierAt = -1;
 	for (unsigned seed = 1; seed <= 10; seed++)
 	{
-		const auto first = drive(firstPairOnly, seed);
+		const auto first = drive(firstPairOf(d), seed);
 		EXPECT_EQ(first.track.pairsUsed(), 1) << "seed " << seed;
 		EXPECT_GT(std::abs(first.track.scaleError() - d.trueScaleError), 0.1) << "seed " << seed;
 		// The later pairs disagree with it: it is left out in the end.
@@ -181,9 +186,7 @@ TEST(LandmarkScaleTrack, ARightPairTheEstimateWasNotReadyForComesBack)
 	d.trueScaleError = 1.35;
 	d.firstStep = 1.8;
 	d.noise = 0;
-	DriveSettings firstPairOnly = d;
-	firstPairOnly.sightings = 2;
-	const auto first = drive(firstPairOnly, 1);
+	const auto first = drive(firstPairOf(d), 1);
 	EXPECT_EQ(first.track.pairsUsed(), 0);
 	EXPECT_EQ(first.track.pairsRejected(), 1);
 	EXPECT_EQ(first.track.scaleError(), 1.0);
