@@ -1,11 +1,13 @@
 #include <libvslam/frontend/BundleAdjustment.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkCreator.h>
+#include <libvslam/frontend/StructureUncertainty.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/eigen.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -26,6 +28,46 @@ ba::CameraPose relativePose(const mrpt::poses::CPose3D& cameraV, const mrpt::pos
 double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
 	return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+}
+
+/** Each point's std along its ray from camera 0 (the newest), relative to
+ * its distance, with the cameras fixed at their refined poses and pixel
+ * noise sigmaPx (StructureUncertainty.h). */
+std::vector<float> relativeDepthStds(const ba::Problem& problem, double sigmaPx)
+{
+	std::vector<std::vector<Eigen::Matrix<double, 2, 3>>> jacobians(problem.points.size());
+	for (const auto& ob : problem.observations)
+	{
+		Eigen::Matrix<double, 2, 6> Jcam;
+		Eigen::Matrix<double, 2, 3> Jpoint;
+		ba::jacobians(problem, ob, Jcam, Jpoint);
+		jacobians[ob.point].push_back(Jpoint);
+	}
+	std::vector<float> out;
+	out.reserve(problem.points.size());
+	for (size_t i = 0; i < problem.points.size(); i++)
+	{
+		const Eigen::Vector3d& X = problem.points[i];  // camera 0 is at the origin
+		const double relative = stdAlongDirection(jacobians[i], X, sigmaPx) / X.norm();
+		out.push_back(static_cast<float>(std::min(relative, static_cast<double>(std::numeric_limits<float>::max()))));
+	}
+	return out;
+}
+
+/** The pixel noise of a refined problem: the RMS residual of the points
+ * whose worst residual (`worstOfPoint`) is within `maxPx`, at least
+ * kLeastPixelNoisePx. */
+double pixelNoiseOf(const ba::Problem& problem, const std::vector<double>& worstOfPoint, double maxPx)
+{
+	double sq = 0;
+	size_t count = 0;
+	for (const auto& ob : problem.observations)
+		if (worstOfPoint[ob.point] <= maxPx)
+		{
+			sq += ba::residual(problem, ob).squaredNorm();
+			count++;
+		}
+	return std::max(kLeastPixelNoisePx, count ? std::sqrt(sq / count) : 0.0);
 }
 
 double rotationAngle(const Eigen::Matrix3d& R)
@@ -212,6 +254,8 @@ CreationResult vslam::createLandmark(
 
 	// Keep well-conditioned points only.
 	const auto err = maxErrorOfPoint(problem);
+	const std::vector<float> depthStd =
+		relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px));
 	std::vector<Eigen::Vector3d> centres;
 	for (const auto& p : problem.poses) centres.push_back(p.centre());
 	const double minParallax = o.creation_min_parallax_deg * M_PI / 180;
@@ -224,7 +268,8 @@ CreationResult vslam::createLandmark(
 		for (size_t a = 0; a < centres.size(); a++)
 			for (size_t b = a + 1; b < centres.size(); b++)
 				parallax = std::max(parallax, angleBetween(X - centres[a], X - centres[b]));
-		if (parallax >= minParallax) good.push_back(static_cast<int>(i));
+		const bool depthKnown = o.creation_max_depth_std <= 0 || depthStd[i] <= o.creation_max_depth_std;
+		if (parallax >= minParallax && depthKnown) good.push_back(static_cast<int>(i));
 	}
 	std::stable_sort(good.begin(), good.end(), [&](int a, int b) { return err[a] < err[b]; });
 	if (static_cast<int>(good.size()) > o.creation_max_points) good.resize(o.creation_max_points);
@@ -249,6 +294,7 @@ CreationResult vslam::createLandmark(
 		double xr = 0, yr = 0, zr = 0;
 		mount.composePoint(X.x(), X.y(), X.z(), xr, yr, zr);
 		lm.points.emplace_back(static_cast<float>(xr), static_cast<float>(yr), static_cast<float>(zr));
+		lm.depthStd.push_back(depthStd[i]);
 		last.features.descriptors.row(tracks[trackOfPoint[i]][0]).copyTo(lm.descriptors.row(static_cast<int>(r)));
 	}
 	for (const auto& ob : problem.observations)

@@ -4,6 +4,7 @@
 #include <libvslam/frontend/PlanarPose.h>
 #include <libvslam/frontend/PoseAmbiguity.h>
 #include <libvslam/frontend/RansacIterations.h>
+#include <libvslam/frontend/StructureUncertainty.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/wrap2pi.h>
 
@@ -92,6 +93,45 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	F << -c, -s, s * r.x - c * r.y, s, -c, c * r.x + s * r.y, 0, 0, -1;
 	setPredictedCovariance(m, F * fit.covariance * F.transpose());
 	return m;
+}
+
+/** The pose solve's residuals over the landmark points `pointOfInlier`
+ * (indices into lm.points) for the pose X_cam = R(rvec) X + tvec: their
+ * Jacobians with respect to (rvec, tvec), and with
+ * recognition_structure_uncertainty the pixel covariance of each point's
+ * depth std along its ray from the camera that built the landmark (taken
+ * at `mount`, the same camera). */
+std::vector<PoseSolveResidual> poseSolveResiduals(const VisualLandmarkModel& lm, const std::vector<int>& pointOfInlier,
+	const cv::Mat& rvec, const cv::Mat& tvec, const PinholeCamera& camera, const mrpt::poses::CPose3D& mount,
+	const TVisualFrontEndOptions& o)
+{
+	std::vector<cv::Point3f> object;
+	for (int p : pointOfInlier) object.push_back(lm.points[p]);
+	cv::Mat jacobian;
+	std::vector<cv::Point2f> unused;
+	cv::projectPoints(object, rvec, tvec, cv::Mat(camera.K()), cv::noArray(), unused, jacobian);
+	const bool withStructure = o.recognition_structure_uncertainty && lm.depthStd.size() == lm.points.size();
+	cv::Mat Rcv;
+	cv::Rodrigues(rvec, Rcv);
+	Eigen::Matrix3d R;
+	for (int r = 0; r < 3; r++)
+		for (int c = 0; c < 3; c++) R(r, c) = Rcv.at<double>(r, c);
+	const Eigen::Vector3d t(tvec.at<double>(0), tvec.at<double>(1), tvec.at<double>(2));
+	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
+	std::vector<PoseSolveResidual> residuals(pointOfInlier.size());
+	for (size_t k = 0; k < pointOfInlier.size(); k++)
+	{
+		for (int axis = 0; axis < 2; axis++)
+			for (int c = 0; c < 6; c++)  // d/drvec (3), d/dtvec (3)
+				residuals[k].jacobianWrtPose(axis, c) = jacobian.at<double>(static_cast<int>(2 * k) + axis, c);
+		if (!withStructure) continue;
+		const Eigen::Vector3d X(object[k].x, object[k].y, object[k].z);
+		const Eigen::Vector3d ray = X - creationCamera;
+		const Eigen::Vector2d alongRay = projectionJacobianWrtPoint(R, t, camera.fx, camera.fy, X) * ray.normalized() *
+			(lm.depthStd[pointOfInlier[k]] * ray.norm());
+		residuals[k].structureCovariancePx = alongRay * alongRay.transpose();
+	}
+	return residuals;
 }
 
 constexpr double kRansacConfidence = 0.999;
@@ -234,28 +274,21 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	}
 	if (o.recognition_planar) return planarMeasurement(m, refinedInliers, object, pixels, image.camera.K(), mount, o);
 
-	// Predicted uncertainty: pose covariance sigma^2 (J^T J)^-1 of the
-	// inliers' reprojection (sigma: their RMS error, at least 0.5 px),
-	// carried to (dx, dy, dtheta) by a numerical Jacobian.
-	cv::Mat jacobian;
-	std::vector<cv::Point2f> unused;
-	cv::projectPoints(inlierObject, rvec, tvec, K, cv::noArray(), unused, jacobian);
-	Eigen::Matrix<double, 6, 6> JtJ = Eigen::Matrix<double, 6, 6>::Zero();
-	for (int r = 0; r < jacobian.rows; r++)
-	{
-		Eigen::Matrix<double, 1, 6> row;
-		for (int c = 0; c < 6; c++) row(c) = jacobian.at<double>(r, c);  // d/drvec (3), d/dtvec (3)
-		JtJ += row.transpose() * row;
-	}
-	const double sigmaPx = std::max(0.5, m.ProjErrRMS);
-	Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(JtJ);
-	if (!lu.isInvertible())
+	// Predicted uncertainty: the pose covariance of the least-squares fit
+	// over the inliers (pixel noise sigma: their RMS error, at least
+	// kLeastPixelNoisePx; with recognition_structure_uncertainty also each
+	// point's depth uncertainty), carried to (dx, dy, dtheta) by a
+	// numerical Jacobian.
+	std::vector<int> pointOfInlier;
+	for (int i : refinedInliers) pointOfInlier.push_back(matches[i].second);
+	Eigen::Matrix<double, 6, 6> poseCov;
+	if (!poseCovariance(poseSolveResiduals(lm, pointOfInlier, rvec, tvec, image.camera, mount, o),
+			std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov))
 	{
 		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
 		m.covariance.setConstant(std::numeric_limits<double>::infinity());
 		return m;
 	}
-	const Eigen::Matrix<double, 6, 6> poseCov = sigmaPx * sigmaPx * lu.inverse();
 	Eigen::Matrix<double, 3, 6> F;
 	for (int k = 0; k < 6; k++)
 	{

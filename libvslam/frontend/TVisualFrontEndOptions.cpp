@@ -40,6 +40,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		c, s, "creation_max_reprojection_px", creation_max_reprojection_px, Range::positive());
 	creation_min_parallax_deg =
 		readDouble(c, s, "creation_min_parallax_deg", creation_min_parallax_deg, Range::closed(0, 90));
+	creation_max_depth_std =
+		readDouble(c, s, "creation_max_depth_std", creation_max_depth_std, Range::nonNegative());
 	creation_max_depth = readDouble(c, s, "creation_max_depth", creation_max_depth, Range::positive());
 	creation_odometry_sigma_deg =
 		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range::positive());
@@ -71,6 +73,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
 	recognition_max_std_phi = readDegreesAsRadians(
 		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
+	recognition_structure_uncertainty =
+		readBool(c, s, "recognition_structure_uncertainty", recognition_structure_uncertainty);
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
 	search_index = readWord("search_index", search_index, {"kdtree", "flann"});
@@ -118,6 +122,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_max_points", creation_max_points, 30, 10, "Points kept per landmark at most");
 	c.write(s, "creation_max_reprojection_px", creation_max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");
 	c.write(s, "creation_min_parallax_deg", creation_min_parallax_deg, 30, 10, "Widest angle between a point's rays at least [deg]");
+	c.write(s, "creation_max_depth_std", creation_max_depth_std, 30, 10,
+		"Drop points whose depth std exceeds this share of their distance (0: no limit)");
 	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
 	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
@@ -143,6 +149,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Reject a measurement whose predicted position std exceeds this [m] (0: off)");
 	c.write(s, "recognition_max_std_phi_deg", recognition_max_std_phi * 180 / M_PI, 30, 10,
 		"Reject a measurement whose predicted heading std exceeds this [deg] (0: off)");
+	c.write(s, "recognition_structure_uncertainty", recognition_structure_uncertainty, 30, 10,
+		"Add each point's depth uncertainty from creation to the predicted measurement uncertainty (6-DOF solve)");
 	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
 	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks)");

@@ -45,6 +45,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double creation_max_reprojection_px = 2.0;  //!< per view, after refinement
 	double creation_min_parallax_deg = 1.0;  //!< widest angle between a point's rays
 	double creation_max_depth = 20;  //!< m from the landmark frame
+	/** Points whose depth std along their ray (from the views' geometry and
+	 * the fit's pixel noise, StructureUncertainty.h) exceeds this share of
+	 * their distance are dropped (0: no limit). Unlike the parallax angle it
+	 * counts the focal length, the pixel noise and every view. */
+	double creation_max_depth_std = 0;
 	/** Odometry's uncertainty between creation views, as priors in the
 	 * bundle adjustment: heading (deg) and translation relative to the
 	 * distance travelled. They keep forward-motion reconstructions from
@@ -97,6 +102,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * whatever their reprojection error (0: no limit). */
 	double recognition_max_std_xy = 0;  //!< m
 	double recognition_max_std_phi = 0;  //!< rad (INI: degrees)
+	/** Count each point's depth uncertainty from creation (its short
+	 * baseline) in the predicted measurement uncertainty, not only the
+	 * inliers' pixel error (StructureUncertainty.h; 6-DOF solve only). */
+	bool recognition_structure_uncertainty = false;
 	/** A recognition is kept only if its pose explains the inliers better
 	 * than the best competing pose (the mirror pose of a plane seen small,
 	 * PoseAmbiguity.h) by at least this much: the difference of their

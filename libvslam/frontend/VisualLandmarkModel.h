@@ -17,6 +17,10 @@ struct VisualLandmarkModel
 {
 	int64_t id = 0;
 	std::vector<cv::Point3f> points;  //!< landmark frame, metres
+	/** Per point: its std along the ray from the camera that built the
+	 * landmark, relative to its distance (StructureUncertainty.h); empty
+	 * when unknown (the points are then taken as exact). */
+	std::vector<float> depthStd;
 	/** One row per point: CV_32F (128 floats), or CV_8U when compact. */
 	cv::Mat descriptors;
 	double createdAt = 0;  //!< s
@@ -30,11 +34,11 @@ struct VisualLandmarkModel
 	/** Its scale, refined from later sightings (scale_refinement). */
 	LandmarkScaleTrack scale;
 
-	/** Bytes this landmark takes in memory (points, descriptors, fields,
+	/** Bytes this landmark takes in memory (points, their depth stds, descriptors, fields,
 	 * the scale track's pairs). */
 	size_t bytes() const
 	{
-		return sizeof(*this) + points.size() * sizeof(cv::Point3f) +
+		return sizeof(*this) + points.size() * sizeof(cv::Point3f) + depthStd.size() * sizeof(float) +
 			descriptors.total() * descriptors.elemSize() + scale.bytes();
 	}
 };
