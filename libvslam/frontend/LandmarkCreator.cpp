@@ -294,7 +294,7 @@ CreationResult vslam::createLandmark(
 		double xr = 0, yr = 0, zr = 0;
 		mount.composePoint(X.x(), X.y(), X.z(), xr, yr, zr);
 		lm.points.emplace_back(static_cast<float>(xr), static_cast<float>(yr), static_cast<float>(zr));
-		lm.depthStd.push_back(depthStd[i]);
+		if (o.recognition_structure_uncertainty) lm.depthStd.push_back(depthStd[i]);  // kept only where used
 		last.features.descriptors.row(tracks[trackOfPoint[i]][0]).copyTo(lm.descriptors.row(static_cast<int>(r)));
 	}
 	for (const auto& ob : problem.observations)

@@ -104,7 +104,8 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double recognition_max_std_phi = 0;  //!< rad (INI: degrees)
 	/** Count each point's depth uncertainty from creation (its short
 	 * baseline) in the predicted measurement uncertainty, not only the
-	 * inliers' pixel error (StructureUncertainty.h; 6-DOF solve only). */
+	 * inliers' pixel error (StructureUncertainty.h; 6-DOF solve only).
+	 * Landmarks then keep each point's depth std (4 bytes per point). */
 	bool recognition_structure_uncertainty = false;
 	/** A recognition is kept only if its pose explains the inliers better
 	 * than the best competing pose (the mirror pose of a plane seen small,

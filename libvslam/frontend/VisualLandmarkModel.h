@@ -18,8 +18,9 @@ struct VisualLandmarkModel
 	int64_t id = 0;
 	std::vector<cv::Point3f> points;  //!< landmark frame, metres
 	/** Per point: its std along the ray from the camera that built the
-	 * landmark, relative to its distance (StructureUncertainty.h); empty
-	 * when unknown (the points are then taken as exact). */
+	 * landmark, relative to its distance (StructureUncertainty.h); kept
+	 * only with recognition_structure_uncertainty, empty otherwise (the
+	 * points are then taken as exact). */
 	std::vector<float> depthStd;
 	/** One row per point: CV_32F (128 floats), or CV_8U when compact. */
 	cv::Mat descriptors;
