@@ -95,45 +95,6 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 	return m;
 }
 
-/** The pose solve's residuals over the landmark points `pointOfInlier`
- * (indices into lm.points) for the pose X_cam = R(rvec) X + tvec: their
- * Jacobians with respect to (rvec, tvec), and with
- * recognition_structure_uncertainty the pixel covariance of each point's
- * depth std along its ray from the camera that built the landmark (taken
- * at `mount`, the same camera). */
-std::vector<PoseSolveResidual> poseSolveResiduals(const VisualLandmarkModel& lm, const std::vector<int>& pointOfInlier,
-	const cv::Mat& rvec, const cv::Mat& tvec, const PinholeCamera& camera, const mrpt::poses::CPose3D& mount,
-	const TVisualFrontEndOptions& o)
-{
-	std::vector<cv::Point3f> object;
-	for (int p : pointOfInlier) object.push_back(lm.points[p]);
-	cv::Mat jacobian;
-	std::vector<cv::Point2f> unused;
-	cv::projectPoints(object, rvec, tvec, cv::Mat(camera.K()), cv::noArray(), unused, jacobian);
-	const bool withStructure = o.recognition_structure_uncertainty && lm.depthStd.size() == lm.points.size();
-	cv::Mat Rcv;
-	cv::Rodrigues(rvec, Rcv);
-	Eigen::Matrix3d R;
-	for (int r = 0; r < 3; r++)
-		for (int c = 0; c < 3; c++) R(r, c) = Rcv.at<double>(r, c);
-	const Eigen::Vector3d t(tvec.at<double>(0), tvec.at<double>(1), tvec.at<double>(2));
-	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
-	std::vector<PoseSolveResidual> residuals(pointOfInlier.size());
-	for (size_t k = 0; k < pointOfInlier.size(); k++)
-	{
-		for (int axis = 0; axis < 2; axis++)
-			for (int c = 0; c < 6; c++)  // d/drvec (3), d/dtvec (3)
-				residuals[k].jacobianWrtPose(axis, c) = jacobian.at<double>(static_cast<int>(2 * k) + axis, c);
-		if (!withStructure) continue;
-		const Eigen::Vector3d X(object[k].x, object[k].y, object[k].z);
-		const Eigen::Vector3d ray = X - creationCamera;
-		const Eigen::Vector2d alongRay = projectionJacobianWrtPoint(R, t, camera.fx, camera.fy, X) * ray.normalized() *
-			(lm.depthStd[pointOfInlier[k]] * ray.norm());
-		residuals[k].structureCovariancePx = alongRay * alongRay.transpose();
-	}
-	return residuals;
-}
-
 constexpr double kRansacConfidence = 0.999;
 /** AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side. */
 constexpr int kRansacSampleSize = 4;
@@ -279,10 +240,13 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	// kLeastPixelNoisePx; with recognition_structure_uncertainty also each
 	// point's depth uncertainty), carried to (dx, dy, dtheta) by a
 	// numerical Jacobian.
-	std::vector<int> pointOfInlier;
-	for (int i : refinedInliers) pointOfInlier.push_back(matches[i].second);
+	std::vector<float> inlierDepthStd;  // empty: the points taken as exact
+	if (o.recognition_structure_uncertainty && lm.depthStd.size() == lm.points.size())
+		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[matches[i].second]);
+	// The landmark was built by this camera on this mount.
+	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
 	Eigen::Matrix<double, 6, 6> poseCov;
-	if (!poseCovariance(poseSolveResiduals(lm, pointOfInlier, rvec, tvec, image.camera, mount, o),
+	if (!poseCovariance(poseSolveResiduals(inlierObject, inlierDepthStd, creationCamera, rvec, tvec, image.camera.K()),
 			std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov))
 	{
 		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();

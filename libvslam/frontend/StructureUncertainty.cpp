@@ -1,6 +1,7 @@
 #include <libvslam/frontend/StructureUncertainty.h>
 
 #include <Eigen/Dense>
+#include <opencv2/calib3d.hpp>
 
 #include <cmath>
 #include <limits>
@@ -27,6 +28,35 @@ double stdAlongDirection(
 	const Eigen::Vector3d u = direction.normalized();
 	const double variance = sigmaPx * sigmaPx * u.dot(lu.solve(u));
 	return variance > 0 ? std::sqrt(variance) : std::numeric_limits<double>::infinity();
+}
+
+std::vector<PoseSolveResidual> poseSolveResiduals(const std::vector<cv::Point3f>& points,
+	const std::vector<float>& relativeDepthStd, const Eigen::Vector3d& rayOrigin, const cv::Mat& rvec,
+	const cv::Mat& tvec, const cv::Matx33d& K)
+{
+	cv::Mat jacobian;
+	std::vector<cv::Point2f> unused;
+	cv::projectPoints(points, rvec, tvec, cv::Mat(K), cv::noArray(), unused, jacobian);
+	cv::Mat Rcv;
+	cv::Rodrigues(rvec, Rcv);
+	Eigen::Matrix3d R;
+	for (int r = 0; r < 3; r++)
+		for (int c = 0; c < 3; c++) R(r, c) = Rcv.at<double>(r, c);
+	const Eigen::Vector3d t(tvec.at<double>(0), tvec.at<double>(1), tvec.at<double>(2));
+	std::vector<PoseSolveResidual> residuals(points.size());
+	for (size_t k = 0; k < points.size(); k++)
+	{
+		for (int axis = 0; axis < 2; axis++)
+			for (int c = 0; c < 6; c++)  // d/drvec (3), d/dtvec (3)
+				residuals[k].jacobianWrtPose(axis, c) = jacobian.at<double>(static_cast<int>(2 * k) + axis, c);
+		if (relativeDepthStd.empty()) continue;
+		const Eigen::Vector3d X(points[k].x, points[k].y, points[k].z);
+		const Eigen::Vector3d ray = X - rayOrigin;
+		const Eigen::Vector2d alongRay =
+			projectionJacobianWrtPoint(R, t, K(0, 0), K(1, 1), X) * ray.normalized() * (relativeDepthStd[k] * ray.norm());
+		residuals[k].structureCovariancePx = alongRay * alongRay.transpose();
+	}
+	return residuals;
 }
 
 bool poseCovariance(

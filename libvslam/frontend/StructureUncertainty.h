@@ -14,6 +14,7 @@
  * measurement's covariance.
  */
 #include <Eigen/Core>
+#include <opencv2/core.hpp>
 
 #include <vector>
 
@@ -43,6 +44,16 @@ struct PoseSolveResidual
 	Eigen::Matrix<double, 2, 6> jacobianWrtPose;
 	Eigen::Matrix2d structureCovariancePx = Eigen::Matrix2d::Zero();
 };
+
+/** The residuals of a PnP pose X_cam = R(rvec) X + tvec (OpenCV's
+ * parametrization, camera matrix K, no distortion) over `points`: their
+ * Jacobians with respect to (rvec, tvec), and the pixel covariance of each
+ * point's std along its ray from `rayOrigin` (the camera that built it),
+ * `relativeDepthStd[k]` times its distance from there. An empty
+ * `relativeDepthStd` takes the points as exact. */
+std::vector<PoseSolveResidual> poseSolveResiduals(const std::vector<cv::Point3f>& points,
+	const std::vector<float>& relativeDepthStd, const Eigen::Vector3d& rayOrigin, const cv::Mat& rvec,
+	const cv::Mat& tvec, const cv::Matx33d& K);
 
 /** The covariance of an unweighted least-squares pose solve over
  * `residuals` with pixel noise sigmaPx on each, and each residual's

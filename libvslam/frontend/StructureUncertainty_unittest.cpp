@@ -57,31 +57,14 @@ TEST(StructureUncertainty, DepthStdOfAStereoPairIsPixelNoiseOverDisparity)
 
 namespace
 {
-/** Pose residuals of `points` seen from (rvec, tvec) by a 640x480 camera of
- * focal kF, each point's structure std `depthStd` along its ray from the
- * origin (the camera that built it). */
+/** Residuals of `points` for the pose (rvec, tvec), each point's depth std
+ * `depthStd` of its distance from the origin (the camera that built it). */
 std::vector<PoseSolveResidual> residualsOf(
-	const std::vector<cv::Point3d>& points, const cv::Mat& rvec, const cv::Mat& tvec, const cv::Mat& K, double depthStd)
+	const std::vector<cv::Point3d>& points, const cv::Mat& rvec, const cv::Mat& tvec, const cv::Matx33d& K, double depthStd)
 {
-	cv::Mat jacobian;
-	std::vector<cv::Point2d> unused;
-	cv::projectPoints(points, rvec, tvec, K, cv::noArray(), unused, jacobian);
-	cv::Mat Rcv;
-	cv::Rodrigues(rvec, Rcv);
-	Eigen::Matrix3d R;
-	for (int r = 0; r < 3; r++)
-		for (int c = 0; c < 3; c++) R(r, c) = Rcv.at<double>(r, c);
-	const Eigen::Vector3d t(tvec.at<double>(0), tvec.at<double>(1), tvec.at<double>(2));
-	std::vector<PoseSolveResidual> out(points.size());
-	for (size_t k = 0; k < points.size(); k++)
-	{
-		for (int a = 0; a < 2; a++)
-			for (int c = 0; c < 6; c++) out[k].jacobianWrtPose(a, c) = jacobian.at<double>(static_cast<int>(2 * k) + a, c);
-		const Eigen::Vector3d X(points[k].x, points[k].y, points[k].z);
-		const Eigen::Vector2d g = projectionJacobianWrtPoint(R, t, kF, kF, X) * X.normalized() * (depthStd * X.norm());
-		out[k].structureCovariancePx = g * g.transpose();
-	}
-	return out;
+	const std::vector<cv::Point3f> asFloat(points.begin(), points.end());
+	return poseSolveResiduals(asFloat, std::vector<float>(points.size(), static_cast<float>(depthStd)),
+		Eigen::Vector3d::Zero(), rvec, tvec, K);
 }
 }  // namespace
 
@@ -97,14 +80,14 @@ TEST(StructureUncertainty, PoseCovarianceMatchesTheScatterOfPosesFitToUncertainP
 	std::normal_distribution<double> g;
 	std::vector<cv::Point3d> truth;
 	for (int i = 0; i < 40; i++) truth.emplace_back(1.2 * u(rng), 0.5 * u(rng), 3 + u(rng));
-	const cv::Mat K = (cv::Mat_<double>(3, 3) << kF, 0, 320, 0, kF, 240, 0, 0, 1);
+	const cv::Matx33d K(kF, 0, 320, 0, kF, 240, 0, 0, 1);
 	const cv::Mat rvec = (cv::Mat_<double>(3, 1) << 0, 25 * M_PI / 180, 0);
 	cv::Mat Rcv;
 	cv::Rodrigues(rvec, Rcv);
 	const cv::Mat tvec = -Rcv * (cv::Mat_<double>(3, 1) << 1.0, 0, 0.3);
 	const double depthStd = 0.03, sigmaPx = 0.5;
 	std::vector<cv::Point2d> exact;
-	cv::projectPoints(truth, rvec, tvec, K, cv::noArray(), exact);
+	cv::projectPoints(truth, rvec, tvec, cv::Mat(K), cv::noArray(), exact);
 
 	Eigen::Matrix<double, 6, 6> withStructure, pixelsOnly;
 	ASSERT_TRUE(poseCovariance(residualsOf(truth, rvec, tvec, K, depthStd), sigmaPx, withStructure));
@@ -120,7 +103,7 @@ TEST(StructureUncertainty, PoseCovarianceMatchesTheScatterOfPosesFitToUncertainP
 		std::vector<cv::Point2d> seen;
 		for (const auto& px : exact) seen.emplace_back(px.x + sigmaPx * g(rng), px.y + sigmaPx * g(rng));
 		cv::Mat r = rvec.clone(), t = tvec.clone();
-		cv::solvePnP(built, seen, K, cv::noArray(), r, t, true, cv::SOLVEPNP_ITERATIVE);
+		cv::solvePnP(built, seen, cv::Mat(K), cv::noArray(), r, t, true, cv::SOLVEPNP_ITERATIVE);
 		Eigen::Matrix<double, 6, 1> e;
 		for (int i = 0; i < 3; i++) e(i) = r.at<double>(i) - rvec.at<double>(i), e(3 + i) = t.at<double>(i) - tvec.at<double>(i);
 		nees += e.dot(information * e) / trials;
