@@ -284,6 +284,30 @@ TEST(ImageCalibration, UnusableCalibrationsAreErrorsNamingTheImage)
 
 namespace
 {
+/** Measurements against their truth: {RMS position error, mean predicted
+ * position std, RMS heading error, mean predicted heading std}. Position:
+ * the RMS of the 2-D error against the largest axis std (they agree within
+ * sqrt(2) whatever the shape of the error ellipse). */
+struct ScatterAgainstPrediction
+{
+	double squaredPosition = 0, squaredHeading = 0, predictedPosition = 0, predictedHeading = 0;
+	int n = 0;
+
+	void add(const VisualMeasurement& m, const mrpt::poses::CPose2D& truth)
+	{
+		const double ex = m.landmarkInRobot.x() - truth.x(), ey = m.landmarkInRobot.y() - truth.y();
+		squaredPosition += ex * ex + ey * ey;
+		squaredHeading += std::pow(mrpt::math::wrapToPi<double>(m.landmarkInRobot.phi() - truth.phi()), 2);
+		predictedPosition += m.stdPosition;
+		predictedHeading += m.stdHeading;
+		n++;
+	}
+	std::array<double, 4> result() const
+	{
+		return {std::sqrt(squaredPosition / n), predictedPosition / n, std::sqrt(squaredHeading / n), predictedHeading / n};
+	}
+};
+
 /** An exact landmark (no pixel noise at creation) of `scene`, recognized
  * `trials` times from `query` with pixel noise: the empirical standard
  * deviations of the position and heading errors, and the mean predicted
@@ -298,23 +322,16 @@ std::array<double, 4> predictedAgainstEmpirical(const Scene& scene, const mrpt::
 	EXPECT_TRUE(created.landmark) << created.why;
 	if (!created.landmark) return {0, 0, 0, 0};
 	const mrpt::poses::CPose2D truth = path.back() - query;
-	double sx2 = 0, sh2 = 0, predX = 0, predH = 0;
-	int n = 0;
+	ScatterAgainstPrediction scatter;
 	for (int k = 0; k < trials; k++)
 	{
 		const auto m = recognizeLandmark(view(scene, query, rng, 0.5), *created.landmark, kMount, TVisualFrontEndOptions());
 		if (!m) continue;
-		const double ex = m->landmarkInRobot.x() - truth.x(), ey = m->landmarkInRobot.y() - truth.y();
-		sx2 += ex * ex + ey * ey;
-		sh2 += std::pow(mrpt::math::wrapToPi<double>(m->landmarkInRobot.phi() - truth.phi()), 2);
-		predX += m->stdPosition, predH += m->stdHeading;
+		scatter.add(*m, truth);
 		EXPECT_NEAR(std::sqrt(m->covariance(2, 2)), m->stdHeading, 1e-12);
-		n++;
 	}
-	EXPECT_GE(n, trials * 9 / 10);
-	// Position: the RMS of the 2-D error against the largest axis std
-	// (they agree within sqrt(2) whatever the shape of the error ellipse).
-	return {std::sqrt(sx2 / n), predX / n, std::sqrt(sh2 / n), predH / n};
+	EXPECT_GE(scatter.n, trials * 9 / 10);
+	return scatter.result();
 }
 }  // namespace
 
@@ -355,8 +372,7 @@ std::array<double, 4> scatterOfRebuiltLandmarks(
 	std::mt19937 rng(21);
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
 	const mrpt::poses::CPose2D truth = path.back() - query;
-	double sx2 = 0, sh2 = 0, predX = 0, predH = 0;
-	int n = 0;
+	ScatterAgainstPrediction scatter;
 	for (int k = 0; k < trials; k++)
 	{
 		std::vector<CreationView> views;
@@ -366,14 +382,10 @@ std::array<double, 4> scatterOfRebuiltLandmarks(
 		// Kept only for the recognition that uses it.
 		EXPECT_EQ(created.landmark->depthStd.size(), o.recognition_structure_uncertainty ? created.landmark->points.size() : 0);
 		const auto m = recognizeLandmark(view(scene, query, rng, 0.5), *created.landmark, kMount, o);
-		if (!m) continue;
-		sx2 += (m->landmarkInRobot - truth).norm() * (m->landmarkInRobot - truth).norm();
-		sh2 += std::pow(mrpt::math::wrapToPi<double>(m->landmarkInRobot.phi() - truth.phi()), 2);
-		predX += m->stdPosition, predH += m->stdHeading;
-		n++;
+		if (m) scatter.add(*m, truth);
 	}
-	EXPECT_GE(n, trials * 9 / 10);
-	return {std::sqrt(sx2 / n), predX / n, std::sqrt(sh2 / n), predH / n};
+	EXPECT_GE(scatter.n, trials * 9 / 10);
+	return scatter.result();
 }
 }  // namespace
 
