@@ -254,8 +254,11 @@ CreationResult vslam::createLandmark(
 
 	// Keep well-conditioned points only.
 	const auto err = maxErrorOfPoint(problem);
-	const std::vector<float> depthStd =
-		relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px));
+	// Each point's depth std, only where an option uses it.
+	const bool depthStdUsed = o.creation_max_depth_std > 0 || o.recognition_structure_uncertainty;
+	const std::vector<float> depthStd = depthStdUsed
+		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px))
+		: std::vector<float>();
 	std::vector<Eigen::Vector3d> centres;
 	for (const auto& p : problem.poses) centres.push_back(p.centre());
 	const double minParallax = o.creation_min_parallax_deg * M_PI / 180;
