@@ -337,7 +337,7 @@ int CVSlamApp::run()
 				static_cast<unsigned long long>(summary.steps), t, filter.ESS(),
 				updated ? fr.dualRatio : 0.0, updated ? fr.dualParticles : size_t(0),
 				updated ? fr.explainedFraction : 0.0, updated ? fr.hypothesisSupport : size_t(0),
-				updated && fr.kidnapDeclared ? 1 : 0, filter.landmarkIndex().size(),
+				!updated ? 0 : fr.kidnapDeclared ? 1 : fr.kidnapReverted ? -1 : 0, filter.landmarkIndex().size(),
 				updated ? fr.used : size_t(0), ms, std::sqrt(std::max(0.0, cov(0, 0) + cov(1, 1))),
 				std::sqrt(std::max(0.0, cov(2, 2))) * 180 / M_PI);
 			std::fflush(stepLog);

@@ -106,6 +106,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  dual_particles_drawn: " << fs.dualParticlesDrawn << "\n"
 	  << "  unexplained_frames: " << fs.unexplainedFrames << "\n"
 	  << "  kidnaps_detected: " << fs.kidnapsDetected << "\n"
+	  << "  kidnaps_reverted: " << fs.kidnapsReverted << "\n"
 	  << "  loop_closures: " << fs.loopClosures << "\n"
 	  << "  loop_closure_edges_left_out: " << fs.loopClosureEdgesLeftOut << "\n"
 	  << "timing:\n"
@@ -159,7 +160,8 @@ std::string RunSummary::brief(const CVSlamParticleFilter& f) const
 	o.precision(4);
 	o << "vslam: " << status << ": " << steps << " steps, " << f.landmarkIndex().size()
 	  << " landmarks, " << f.stats().measurementsUsed << " measurements used, "
-	  << f.stats().kidnapsDetected << " kidnaps detected, " << totalSeconds << " s for "
+	  << f.stats().kidnapsDetected << " kidnaps detected (" << f.stats().kidnapsReverted
+	  << " reverted), " << totalSeconds << " s for "
 	  << realTimeSpan << " s of data (" << speedUp() << "x real time), peak memory "
 	  << peakMemoryMiB << " MiB\n";
 	if (ate)

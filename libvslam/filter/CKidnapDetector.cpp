@@ -20,6 +20,8 @@ void CKidnapDetector::TOptions::loadFromConfigFile(
 	explained_min_fraction = readDouble(
 		c, s, "explained_min_fraction", explained_min_fraction,
 		{0, 1, false, true});
+	revert_on_contradiction =
+		readBool(c, s, "revert_on_contradiction", revert_on_contradiction);
 }
 
 void CKidnapDetector::TOptions::saveToConfigFile(
@@ -34,6 +36,8 @@ void CKidnapDetector::TOptions::saveToConfigFile(
 		"... or this many frames of a single landmark (0: never)");
 	c.write(s, "explained_min_fraction", explained_min_fraction, 25, 12,
 		"Weight fraction of particles whose gate must hold a measurement for it to count as explained");
+	c.write(s, "revert_on_contradiction", revert_on_contradiction, 25, 12,
+		"Go back to the cloud left at a kidnap when another anchored landmark contradicts the kidnap");
 }
 
 CKidnapDetector::Verdict CKidnapDetector::update(
@@ -42,6 +46,18 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 {
 	if (!m_verified) m_verified = t;  // landmarks of the first frame anchor
 	if (m_hypothesis.active()) m_hypothesis.predict(ctx.motion, ctx.rng);
+	if (m_return.active())
+	{
+		m_return.predict(ctx.motion, ctx.rng);
+		if (contradictsKidnap(evidence, ctx))
+		{
+			m_verified = m_returnAnchor;
+			m_localized = true;
+			m_hypothesis.clear();
+			m_reverts++;
+			return Verdict::Reverted;
+		}
+	}
 
 	std::vector<KnownMeasurement> anchoredMeasurements;
 	bool anyExplained = false;
@@ -82,4 +98,40 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 		return Verdict::Kidnapped;
 	}
 	return Verdict::Unexplained;
+}
+
+bool CKidnapDetector::contradictsKidnap(
+	const std::vector<Evidence>& evidence, const Context& ctx)
+{
+	std::vector<KnownMeasurement> contradicting;
+	for (const auto& e : evidence)
+	{
+		if (e.created > m_returnAnchor || m_kidnapSupport.count(e.measurement.m->key)) continue;
+		if (e.explained)
+		{
+			m_return.clear();  // an independent landmark confirms the kidnap
+			return false;
+		}
+		contradicting.push_back(e.measurement);
+	}
+	if (contradicting.empty() ||
+		m_return.explainedFraction(contradicting, ctx.likelihood) <
+			options.explained_min_fraction)
+		return false;
+	m_return.confirm(contradicting, ctx.likelihood, ctx.rng);
+	return true;
+}
+
+void CKidnapDetector::acceptHypothesis(
+	const std::vector<se2::Pose>& left, const std::vector<double>& leftLogW,
+	const LandmarkBank& leftBank)
+{
+	m_return.clear();
+	if (options.revert_on_contradiction && m_verified)
+	{
+		m_return.startFrom(left, leftLogW, leftBank);
+		m_returnAnchor = *m_verified;
+		m_kidnapSupport = m_hypothesis.landmarks();
+	}
+	m_hypothesis.clear();
 }

@@ -23,6 +23,14 @@
  * explained none. False recognitions are mutually inconsistent, so they
  * keep restarting the hypothesis instead of confirming it. Any explained
  * anchored measurement drops the hypothesis.
+ *
+ * Return. One landmark recognized falsely but consistently (a repeated
+ * texture) confirms a hypothesis as well as a real kidnap does. So a
+ * declared kidnap stays reversible: the cloud the filter left becomes a
+ * return hypothesis, carried forward with odometry. A landmark outside the
+ * kidnap's support, anchored before it, decides: explained by the new
+ * cloud, the kidnap is confirmed and the return dropped; explained only by
+ * the return hypothesis, the filter goes back to it (Verdict::Reverted).
  */
 #include <libvslam/filter/CRelocalizationHypothesis.h>
 #include <libvslam/filter/KnownMeasurement.h>
@@ -31,6 +39,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 namespace vslam
@@ -47,6 +56,9 @@ class CKidnapDetector
 		 * (0: never). */
 		uint32_t single_landmark_frames = 6;
 		double explained_min_fraction = 0.01;
+		/** Keep the cloud left at a kidnap, and go back to it when another
+		 * landmark contradicts the kidnap (see the file comment). */
+		bool revert_on_contradiction = true;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -79,7 +91,10 @@ class CKidnapDetector
 		Neutral,  //!< no anchored evidence in this frame
 		Localized,  //!< an anchored measurement was explained
 		Unexplained,  //!< anchored evidence, none explained
-		Kidnapped  //!< the hypothesis is confirmed: switch to it
+		Kidnapped,  //!< the hypothesis is confirmed: switch to it
+		/** Another landmark contradicts the last kidnap: switch back to
+		 * returnHypothesis(). */
+		Reverted
 	};
 
 	CKidnapDetector() = default;
@@ -99,15 +114,31 @@ class CKidnapDetector
 	/** True unless the latest anchored evidence was unexplained. */
 	bool localized() const { return m_localized; }
 	uint64_t kidnapsDetected() const { return m_detections; }
+	uint64_t kidnapsReverted() const { return m_reverts; }
 	const CRelocalizationHypothesis& hypothesis() const { return m_hypothesis; }
-	/** Drops the hypothesis (after the filter switched to it). */
-	void clearHypothesis() { m_hypothesis.clear(); }
+	/** The filter switched to the hypothesis: drops it, and keeps the cloud
+	 * it left (poses, log-weights, map) as the return hypothesis. */
+	void acceptHypothesis(
+		const std::vector<se2::Pose>& left, const std::vector<double>& leftLogW,
+		const LandmarkBank& leftBank);
+	const CRelocalizationHypothesis& returnHypothesis() const { return m_return; }
+	/** Drops the return hypothesis (after the filter switched back to it). */
+	void clearReturnHypothesis() { m_return.clear(); }
 
    private:
 	std::optional<mrpt::Clock::time_point> m_verified;
 	bool m_localized = true;
 	uint64_t m_detections = 0;
 	CRelocalizationHypothesis m_hypothesis;
+	CRelocalizationHypothesis m_return;
+	/** What the return test may use: landmarks anchored when the kidnap was
+	 * declared, other than those that confirmed it. */
+	mrpt::Clock::time_point m_returnAnchor{};
+	std::unordered_set<LandmarkKey, LandmarkKeyHash> m_kidnapSupport;
+	uint64_t m_reverts = 0;
+
+	/** The return test on one frame's evidence; true if it reverts. */
+	bool contradictsKidnap(const std::vector<Evidence>& evidence, const Context& ctx);
 };
 
 }  // namespace vslam

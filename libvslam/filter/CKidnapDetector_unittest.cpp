@@ -134,3 +134,75 @@ TEST_F(KidnapDetectorTest, DisabledDetectorNeverDeclares)
 		EXPECT_EQ(feed(d, f, {seen(f % 2, se2::between(kTrue, f % 2 ? kL2 : kL1), false, at(0))}),
 				  V::Unexplained);
 }
+
+namespace
+{
+/** One landmark recognized falsely but consistently, as if the robot stood
+ * at kElsewhere: a kidnap is declared, and the filter's cloud on kTrue is
+ * handed over as the return hypothesis. */
+class ReturnHypothesisTest : public KidnapDetectorTest
+{
+   protected:
+	const se2::Pose kElsewhere{3, 4, 1.0};
+	CKidnapDetector d;
+
+	void declareFalseKidnap()
+	{
+		feed(d, 0, {});
+		const auto falseZ = se2::between(kElsewhere, kL1);
+		for (int f = 1; f < 6; f++) feed(d, f, {seen(0, falseZ, false, at(0))});
+		ASSERT_EQ(feed(d, 6, {seen(0, falseZ, false, at(0))}), V::Kidnapped);
+		const std::vector<se2::Pose> left(200, kTrue);
+		d.acceptHypothesis(left, std::vector<double>(left.size(), 0.0), bank);
+		ASSERT_FALSE(d.hypothesis().active());
+	}
+};
+}  // namespace
+
+TEST_F(ReturnHypothesisTest, AnotherLandmarkExplainedOnlyByTheLeftCloudReverts)
+{
+	declareFalseKidnap();
+	ASSERT_TRUE(d.returnHypothesis().active());
+	EXPECT_EQ(feed(d, 7, {seen(1, se2::between(kTrue, kL2), false, at(0))}), V::Reverted);
+	EXPECT_EQ(d.kidnapsReverted(), 1u);
+	EXPECT_TRUE(d.localized());
+	for (const auto& p : d.returnHypothesis().poses())
+		ASSERT_LT(std::hypot(p.x - kTrue.x, p.y - kTrue.y), 0.05);
+}
+
+TEST_F(ReturnHypothesisTest, AnotherLandmarkExplainedByTheNewCloudConfirmsTheKidnap)
+{
+	declareFalseKidnap();
+	EXPECT_EQ(feed(d, 7, {seen(1, se2::between(kElsewhere, kL2), true, at(0))}), V::Localized);
+	EXPECT_FALSE(d.returnHypothesis().active());
+	// A contradiction after the confirmation no longer reverts.
+	EXPECT_NE(feed(d, 8, {seen(1, se2::between(kTrue, kL2), false, at(0))}), V::Reverted);
+	EXPECT_EQ(d.kidnapsReverted(), 0u);
+}
+
+TEST_F(ReturnHypothesisTest, TheKidnapsOwnLandmarkOrAYoungOneNeverReverts)
+{
+	declareFalseKidnap();
+	// The kidnap's own landmark, now seen where the left cloud expects it.
+	EXPECT_NE(feed(d, 7, {seen(0, se2::between(kTrue, kL1), false, at(0))}), V::Reverted);
+	// A landmark placed after the anchor: the left cloud explains it by
+	// construction, so it is no evidence.
+	EXPECT_NE(feed(d, 8, {seen(1, se2::between(kTrue, kL2), false, at(5.5))}), V::Reverted);
+	EXPECT_TRUE(d.returnHypothesis().active());
+}
+
+TEST_F(ReturnHypothesisTest, AContradictionTheLeftCloudCannotExplainKeepsTheKidnap)
+{
+	declareFalseKidnap();
+	const se2::Pose nowhere{-4, 9, -2.0};
+	EXPECT_NE(feed(d, 7, {seen(1, se2::between(nowhere, kL2), false, at(0))}), V::Reverted);
+	EXPECT_TRUE(d.returnHypothesis().active());
+}
+
+TEST_F(ReturnHypothesisTest, DisabledKeepsNoReturnHypothesis)
+{
+	d.options.revert_on_contradiction = false;
+	declareFalseKidnap();
+	EXPECT_FALSE(d.returnHypothesis().active());
+	EXPECT_NE(feed(d, 7, {seen(1, se2::between(kTrue, kL2), false, at(0))}), V::Reverted);
+}

@@ -72,6 +72,17 @@ bool CRelocalizationHypothesis::start(
 	return true;
 }
 
+void CRelocalizationHypothesis::startFrom(
+	const std::vector<se2::Pose>& poses, const std::vector<double>& logW,
+	const LandmarkBank& bank)
+{
+	clear();
+	if (poses.empty()) return;
+	m_bank = bank;
+	m_poses = poses;
+	resample(logW);
+}
+
 void CRelocalizationHypothesis::predict(
 	const MotionPrior& motion, mrpt::random::CRandomGenerator& rng)
 {

@@ -37,6 +37,12 @@ class CRelocalizationHypothesis
 		size_t n, const CRobustLikelihood& likelihood,
 		mrpt::random::CRandomGenerator& rng);
 
+	/** Starts from a cloud the filter held (poses with log-weights, and
+	 * their map): resampled to equal weights. */
+	void startFrom(
+		const std::vector<se2::Pose>& poses, const std::vector<double>& logW,
+		const LandmarkBank& bank);
+
 	/** Moves every particle by the odometry since the last call. */
 	void predict(const MotionPrior& motion, mrpt::random::CRandomGenerator& rng);
 
@@ -55,6 +61,10 @@ class CRelocalizationHypothesis
 	/** Frames it has explained, counting the one it started from. */
 	size_t support() const { return m_support; }
 	size_t distinctLandmarks() const { return m_landmarks.size(); }
+	const std::unordered_set<LandmarkKey, LandmarkKeyHash>& landmarks() const
+	{
+		return m_landmarks;
+	}
 	const std::vector<se2::Pose>& poses() const { return m_poses; }
 	const LandmarkBank& bank() const { return m_bank; }
 

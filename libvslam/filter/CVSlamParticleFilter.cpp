@@ -50,6 +50,7 @@ void CVSlamParticleFilter::reset()
 	m_index = CLandmarkIndex();
 	m_odometry.reset();
 	m_lastFrameTime.reset();
+	m_lastKidnap.reset();
 	m_kidnap = CKidnapDetector(m_options.kidnap);
 	m_stats = TFilterStats();
 	m_lastFrame = TFrameReport();
@@ -207,10 +208,14 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 
 	std::vector<std::pair<size_t, const LandmarkMeasurement*>> toReinitialize;
 	std::vector<KnownMeasurement> used;
-	if (verdict == CKidnapDetector::Verdict::Kidnapped)
+	if (verdict == CKidnapDetector::Verdict::Kidnapped ||
+		verdict == CKidnapDetector::Verdict::Reverted)
 	{
 		// The hypothesis already holds this frame's evidence and motion.
-		switchToRelocalizationHypothesis();
+		if (verdict == CKidnapDetector::Verdict::Kidnapped)
+			switchToRelocalizationHypothesis(frame.timestamp);
+		else
+			revertLastKidnap();
 		for (const auto& k : known)
 			if (m_index.entry(k.slot).suspect) toReinitialize.emplace_back(k.slot, k.m);
 	}
@@ -247,7 +252,9 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	if (m_graph)
 	{
 		m_graph->addOdometry(m_odometry.mean(), m_odometry.cov());
-		if (verdict == CKidnapDetector::Verdict::Kidnapped) m_graph->loseOdometry();
+		if (verdict == CKidnapDetector::Verdict::Kidnapped ||
+			verdict == CKidnapDetector::Verdict::Reverted)
+			m_graph->loseOdometry();
 	}
 	m_odometry.reset();
 
@@ -295,21 +302,34 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	m_lastFrame.essAfterUpdate = ESS();
 }
 
-void CVSlamParticleFilter::switchToRelocalizationHypothesis()
+void CVSlamParticleFilter::moveParticlesTo(const std::vector<se2::Pose>& poses)
 {
-	// The paper's kidnap mode: only dual particles, importance factors from
-	// a uniform prior. They were drawn and tested by the detector.
 	// They carry the current map of the best particle (which also holds
 	// the landmarks created since the hypothesis started).
-	const auto& h = m_kidnap.hypothesis();
 	const LandmarkBank bank = m_particles[bestParticleIndex()].d.bank;
 	for (size_t i = 0; i < m_particles.size(); i++)
 	{
-		m_particles[i].d.pose = h.poses()[i % h.poses().size()];
+		m_particles[i].d.pose = poses[i % poses.size()];
 		m_particles[i].d.bank = bank;
 		m_particles[i].log_w = 0;
 	}
-	m_kidnap.clearHypothesis();
+}
+
+void CVSlamParticleFilter::switchToRelocalizationHypothesis(mrpt::Clock::time_point t)
+{
+	// The paper's kidnap mode: only dual particles, importance factors from
+	// a uniform prior. They were drawn and tested by the detector. The
+	// cloud left behind stays with the detector, in case of a return.
+	std::vector<se2::Pose> left(m_particles.size());
+	std::vector<double> leftLogW(m_particles.size());
+	for (size_t i = 0; i < m_particles.size(); i++)
+	{
+		left[i] = m_particles[i].d.pose;
+		leftLogW[i] = m_particles[i].log_w;
+	}
+	const LandmarkBank leftBank = m_particles[bestParticleIndex()].d.bank;
+	moveParticlesTo(m_kidnap.hypothesis().poses());
+	m_kidnap.acceptHypothesis(left, leftLogW, leftBank);
 	m_stats.kidnapsDetected++;
 	m_stats.dualParticlesDrawn += m_particles.size();
 	m_lastFrame.kidnapDeclared = true;
@@ -317,10 +337,33 @@ void CVSlamParticleFilter::switchToRelocalizationHypothesis()
 	m_lastFrame.dualParticles = m_particles.size();
 	// Landmarks created since the last verified frame were placed from a
 	// pose the robot did not have; streaks so far were the kidnap's doing.
+	m_lastKidnap = LastKidnap{t, {}};
 	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
 		e.unexplainedStreak = 0;
-		if (!m_kidnap.anchored(e.created)) e.suspect = true;
+		if (!m_kidnap.anchored(e.created) && !e.suspect)
+		{
+			e.suspect = true;
+			m_lastKidnap->markedSuspect.push_back(e.key);
+		}
 	});
+}
+
+void CVSlamParticleFilter::revertLastKidnap()
+{
+	moveParticlesTo(m_kidnap.returnHypothesis().poses());
+	m_kidnap.clearReturnHypothesis();
+	m_stats.kidnapsReverted++;
+	m_lastFrame.kidnapReverted = true;
+	// Back to the belief the kidnap interrupted: what the kidnap made
+	// suspect is sound again, and what was placed since is suspect.
+	if (!m_lastKidnap) return;
+	for (const auto& key : m_lastKidnap->markedSuspect)
+		if (const auto slot = m_index.find(key)) m_index.entry(*slot).suspect = false;
+	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
+		e.unexplainedStreak = 0;
+		if (e.created >= m_lastKidnap->time) e.suspect = true;
+	});
+	m_lastKidnap.reset();
 }
 
 void CVSlamParticleFilter::sampleMotionOnly(const MotionPrior& mp)

@@ -52,6 +52,8 @@ struct TFilterStats
 	uint64_t landmarksReinitialized = 0;
 	uint64_t duplicateCreations = 0;
 	uint64_t kidnapsDetected = 0;
+	/** Declared kidnaps another landmark contradicted: the filter went back. */
+	uint64_t kidnapsReverted = 0;
 	/** Frames whose anchored measurements the filter could not explain
 	 * (a relocalization hypothesis was tested). */
 	uint64_t unexplainedFrames = 0;
@@ -74,6 +76,8 @@ struct TFrameReport
 	size_t hypothesisSupport = 0;
 	/** Kidnapping declared: the filter switched to the hypothesis. */
 	bool kidnapDeclared = false;
+	/** The last kidnap was contradicted: the filter went back. */
+	bool kidnapReverted = false;
 	double dualRatio = 0;
 	size_t dualParticles = 0;
 	double essAfterUpdate = 1;
@@ -169,7 +173,17 @@ class CVSlamParticleFilter
 	void updateWithFrame(const FrameMeasurements& frame);
 	/** The frame's measurements with the timestamp-jitter noise added. */
 	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
-	void switchToRelocalizationHypothesis();
+	/** The last declared kidnap: when, and the landmarks it made suspect. */
+	struct LastKidnap
+	{
+		mrpt::Clock::time_point time;
+		std::vector<LandmarkKey> markedSuspect;
+	};
+	std::optional<LastKidnap> m_lastKidnap;
+
+	void moveParticlesTo(const std::vector<se2::Pose>& poses);
+	void switchToRelocalizationHypothesis(mrpt::Clock::time_point t);
+	void revertLastKidnap();
 	void sampleMotionOnly(const MotionPrior& mp);
 	/** Explained / plausible weight fractions of every known measurement,
 	 * and the spread of the predicted cloud. With the optimal nominal

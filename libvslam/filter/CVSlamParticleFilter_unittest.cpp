@@ -365,3 +365,38 @@ TEST(CVSlamParticleFilter, ALoopClosureMovesTheMapOntoThePoseGraphSolution)
 	EXPECT_GT(before, 0.4);
 	EXPECT_LT(after, 0.5 * before);
 }
+
+TEST(CVSlamParticleFilter, AKidnapAnotherLandmarkContradictsIsUndone)
+{
+	auto o = manyParticles(300);
+	o.kidnap.enabled = true;
+	mrpt::random::getRandomGenerator().randomize(12);
+	CVSlamParticleFilter f(o);
+	const se2::Pose l1{2, 0, 0}, l2{0, 2, M_PI / 2}, elsewhere{-1, 0.5, 0.3};
+	f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark(l1)},
+				   {{LandmarkKind::Pose, 2}, poseLandmark(l2)}});
+	// Landmark 1 recognized falsely but consistently, as if from elsewhere;
+	// landmark 3 is created on the way, from the true pose (the origin).
+	const auto falseZ = se2::between(elsewhere, l1);
+	for (int t = 1; t <= 6; t++)
+		f.processFrame(frame(t, {poseMeasurement(1, falseZ)}, t == 3 ? std::vector{creation(3)}
+																	   : std::vector<LandmarkCreation>{}));
+	ASSERT_EQ(f.stats().kidnapsDetected, 1u);
+	ASSERT_NEAR(f.meanPose().x, elsewhere.x, 0.1);
+	const auto& index = f.landmarkIndex();
+	ASSERT_TRUE(index.entry(*index.find({LandmarkKind::Pose, 3})).suspect);
+	f.processFrame(frame(6.5, {}, {creation(5)}));  // placed from the kidnapped cloud
+
+	// Landmark 2 seen from the origin: only the cloud left behind explains it.
+	f.processFrame(frame(7, {poseMeasurement(2, se2::between({0, 0, 0}, l2))}, {creation(4)}));
+	EXPECT_EQ(f.stats().kidnapsReverted, 1u);
+	EXPECT_TRUE(f.lastFrame().kidnapReverted);
+	EXPECT_NEAR(f.meanPose().x, 0, 0.1);
+	EXPECT_NEAR(f.meanPose().y, 0, 0.1);
+	EXPECT_NEAR(f.meanPose().phi, 0, 0.05);
+	// Placed from the true pose before the kidnap: sound again. Placed in
+	// the frame that reverted: from the restored cloud, so sound too.
+	EXPECT_FALSE(index.entry(*index.find({LandmarkKind::Pose, 3})).suspect);
+	EXPECT_FALSE(index.entry(*index.find({LandmarkKind::Pose, 4})).suspect);
+	EXPECT_TRUE(index.entry(*index.find({LandmarkKind::Pose, 5})).suspect);
+}
