@@ -43,7 +43,7 @@ double yamlNumber(const std::string& yaml, const std::string& key)
 
 /** Bumped whenever the metrics change: finished runs are then scored again
  * from their outputs (no rerun). */
-constexpr double kScoringVersion = 5;
+constexpr double kScoringVersion = 6;
 
 /** Median error over the minute before \a t (the run's error level). */
 double errorBefore(const AteStats& ate, double t)
@@ -111,6 +111,7 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	if (kidnaps > 0) m["recovery_s_worst"] = worst, m["recovery_s_worst_to_prior_level"] = worstToLevel;
 	const std::string yaml = readText(out + "/run_summary.yaml");
 	m["kidnaps_declared"] = yamlNumber(yaml, "kidnaps_detected");
+	m["kidnaps_reverted"] = yamlNumber(yaml, "kidnaps_reverted");
 	m["landmarks"] = yamlNumber(yaml, "total");
 	m["data_s"] = yamlNumber(yaml, "data_seconds");
 	m["wall_s"] = wallSeconds;

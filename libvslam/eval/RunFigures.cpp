@@ -103,7 +103,8 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 	const double t0 = truth.empty() || std::isnan(truth.front().t) ? 0.0 : truth.front().t;
 
 	// Kidnaps: true (the truth jumps) and declared by the filter.
-	ChartMarkers trueKidnaps{{}, {230, 120, 0}, "kidnap (true)"}, declared{{}, {150, 0, 150}, "kidnap declared"};
+	ChartMarkers trueKidnaps{{}, {230, 120, 0}, "kidnap (true)"}, declared{{}, {150, 0, 150}, "kidnap declared"},
+		reverted{{}, {0, 150, 150}, "kidnap reverted"};
 	const std::vector<size_t> jumps = truthJumps(truth);
 	for (const size_t i : jumps) trueKidnaps.x.push_back(truth[i].t - t0);
 	StepLog steps;
@@ -113,7 +114,10 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 		steps = readStepLog(stepFile);
 		const auto times = steps.column("timestamp", stepFile), flags = steps.column("kidnap_declared", stepFile);
 		for (size_t i = 0; i < flags.size(); i++)
-			if (flags[i] > 0) declared.x.push_back(times[i] - t0);
+			if (flags[i] > 0)
+				declared.x.push_back(times[i] - t0);
+			else if (flags[i] < 0)
+				reverted.x.push_back(times[i] - t0);
 	}
 
 	// Fig. 2: the paths and the map.
@@ -134,7 +138,7 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 	o.title = "Position error over time";
 	o.xLabel = "time [s]";
 	o.yLabel = "error [m]";
-	o.markers = {trueKidnaps, declared};
+	o.markers = {trueKidnaps, declared, reverted};
 	writeLineChart(errors, o, out("error_over_time.png"));
 	written.push_back(out("error_over_time.png"));
 	if (src.runDir.empty()) return written;
@@ -162,7 +166,7 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 		c.title = title;
 		c.xLabel = "time [s]";
 		c.yLabel = yLabel;
-		c.markers = {trueKidnaps, declared};
+		c.markers = {trueKidnaps, declared, reverted};
 		writeLineChart({s}, c, out(file));
 		written.push_back(out(file));
 	};

@@ -111,6 +111,7 @@ TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
 	const std::string summary = readFile(dir.file("out/run_summary.yaml"));
 	EXPECT_TRUE(contains(summary, "status: completed")) << summary;
 	EXPECT_TRUE(contains(summary, "kidnaps_detected: 1")) << summary;  // the demo's kidnap
+	EXPECT_TRUE(contains(summary, "kidnaps_reverted: 0")) << summary;  // a real one: it stands
 	EXPECT_TRUE(contains(summary, "peak_memory_MiB: ")) << summary;
 }
 

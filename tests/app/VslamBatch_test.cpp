@@ -80,6 +80,7 @@ TEST(VslamBatch, RunsTheGridSummarizesAndResumes)
 	const std::string metrics = readFile(v60 + "/seed2/metrics.txt");
 	EXPECT_TRUE(contains(metrics, "ate_rmse ")) << metrics;
 	EXPECT_TRUE(contains(metrics, "smoothed_ate_aligned_rmse ")) << metrics;
+	EXPECT_TRUE(contains(metrics, "kidnaps_reverted ")) << metrics;
 	EXPECT_TRUE(contains(readFile(v60 + "/seed2/vslam/config_used.ini"), "sampleSize = 60"));
 	for (const char* figure : {"paths", "error_over_time", "measurements_per_landmark", "particle_spread", "dual_ratio"})
 		EXPECT_TRUE(fs::exists(v60 + "/seed2/vslam/figures/" + figure + ".png")) << figure;
