@@ -169,11 +169,8 @@ class CVSlamParticleFilter
 	/** The loop-closure back-end (none: disabled, prior map, or point
 	 * landmarks in the run). */
 	std::optional<CLandmarkPoseGraph> m_graph;
-
-	void updateWithFrame(const FrameMeasurements& frame);
-	/** The frame's measurements with the timestamp-jitter noise added. */
-	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
-	/** The last declared kidnap: when, and the landmarks it made suspect. */
+	/** The last declared kidnap: when, and the landmarks it made suspect
+	 * (what going back undoes). */
 	struct LastKidnap
 	{
 		mrpt::Clock::time_point time;
@@ -181,6 +178,9 @@ class CVSlamParticleFilter
 	};
 	std::optional<LastKidnap> m_lastKidnap;
 
+	void updateWithFrame(const FrameMeasurements& frame);
+	/** The frame's measurements with the timestamp-jitter noise added. */
+	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
 	void moveParticlesTo(const std::vector<se2::Pose>& poses);
 	void switchToRelocalizationHypothesis(mrpt::Clock::time_point t);
 	void revertLastKidnap();
