@@ -206,10 +206,13 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		verdict == CKidnapDetector::Verdict::Kidnapped;
 	m_lastFrame.hypothesisSupport = m_kidnap.hypothesis().support();
 
+	// A kidnap declared or reverted moves the whole cloud: the odometry
+	// since the last frame no longer links the poses.
+	const bool cloudMoved = verdict == CKidnapDetector::Verdict::Kidnapped ||
+		verdict == CKidnapDetector::Verdict::Reverted;
 	std::vector<std::pair<size_t, const LandmarkMeasurement*>> toReinitialize;
 	std::vector<KnownMeasurement> used;
-	if (verdict == CKidnapDetector::Verdict::Kidnapped ||
-		verdict == CKidnapDetector::Verdict::Reverted)
+	if (cloudMoved)
 	{
 		// The hypothesis already holds this frame's evidence and motion.
 		if (verdict == CKidnapDetector::Verdict::Kidnapped)
@@ -252,9 +255,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	if (m_graph)
 	{
 		m_graph->addOdometry(m_odometry.mean(), m_odometry.cov());
-		if (verdict == CKidnapDetector::Verdict::Kidnapped ||
-			verdict == CKidnapDetector::Verdict::Reverted)
-			m_graph->loseOdometry();
+		if (cloudMoved) m_graph->loseOdometry();
 	}
 	m_odometry.reset();
 
