@@ -66,18 +66,29 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 		"rms pos", "rms head", "beyond 3 sigma");
 	row("all", a.all);
 	row("accepted", a.accepted);
+	if (filter.visual.predicted_cov_scale > 0)
+		std::printf("vslam-frontend: beyond 3 sigma of the noise the filter gives each measurement (Sigma_vis + %g^2 x "
+					"its predicted covariance): all %zu (%.2f%%), accepted %zu (%.2f%%)\n",
+			filter.visual.predicted_cov_scale, a.all.beyond3SigmaOfItsNoise, 100 * a.all.shareBeyond3SigmaOfItsNoise(),
+			a.accepted.beyond3SigmaOfItsNoise, 100 * a.accepted.shareBeyond3SigmaOfItsNoise());
+	// (Not "vslam-frontend: accepted", the row scripts/rendered_study.sh reads.)
+	std::printf("vslam-frontend: median e^T D^-1 e of the accepted, the squared error over the noise (2.37 if the "
+				"noise were right): of Sigma_vis %.2f",
+		a.accepted.medianNeesSigmaVis);
+	if (filter.visual.predicted_cov_scale > 0) std::printf(", of the noise the filter gives each %.2f", a.accepted.medianNeesItsNoise);
+	std::printf("\n");
 	if (csvFile.empty()) return;
 	FILE* f = std::fopen(csvFile.c_str(), "wt");
 	if (!f) throw InputError("cannot create '" + csvFile + "'");
 	std::fprintf(f, "t,landmark,dx,dy,dphi_deg,true_dx,true_dy,true_dphi_deg,ProjErrRMS,NPoints,Slope,accepted,"
-		"beyond_3_sigma,pred_std_dx,pred_std_dy,pred_std_dphi_deg,Height\n");
+		"beyond_3_sigma,pred_std_dx,pred_std_dy,pred_std_dphi_deg,Height,beyond_3_sigma_of_its_noise\n");
 	for (const auto& e : a.errors)
-		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d,%.5f,%.5f,%.4f,%.5f\n", e.measurement.t,
+		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d,%.5f,%.5f,%.4f,%.5f,%d\n", e.measurement.t,
 			static_cast<long long>(e.measurement.landmarkID), e.measurement.z.x, e.measurement.z.y,
 			e.measurement.z.phi * 180 / M_PI, e.expected.x, e.expected.y, e.expected.phi * 180 / M_PI,
 			e.measurement.ProjErrRMS, e.measurement.NPoints, e.measurement.Slope, e.accepted ? 1 : 0,
 			e.beyond3Sigma ? 1 : 0, e.measurement.predictedStdX, e.measurement.predictedStdY,
-			e.measurement.predictedStdPhi * 180 / M_PI, e.measurement.Height);
+			e.measurement.predictedStdPhi * 180 / M_PI, e.measurement.Height, e.beyond3SigmaOfItsNoise ? 1 : 0);
 	std::fclose(f);
 }
 

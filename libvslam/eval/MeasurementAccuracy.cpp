@@ -10,8 +10,8 @@ namespace
 {
 struct ErrorList
 {
-	std::vector<double> position, heading;
-	size_t beyond = 0;
+	std::vector<double> position, heading, neesSigmaVis, neesItsNoise;
+	size_t beyond = 0, beyondItsNoise = 0;
 
 	MeasurementErrorStats stats() const
 	{
@@ -24,6 +24,9 @@ struct ErrorList
 		s.rmsPosition = s.count ? std::sqrt(sp / s.count) : 0;
 		s.rmsHeadingDeg = s.count ? std::sqrt(sh / s.count) * 180 / M_PI : 0;
 		s.beyond3Sigma = beyond;
+		s.beyond3SigmaOfItsNoise = beyondItsNoise;
+		s.medianNeesSigmaVis = median(neesSigmaVis);
+		s.medianNeesItsNoise = median(neesItsNoise);
 		return s;
 	}
 };
@@ -38,11 +41,39 @@ std::optional<se2::Pose> trueLandmarkMeasurement(const Trajectory& truth, double
 	return se2::between(*now, *frame);
 }
 
+namespace
+{
+bool beyondThreeOf(const se2::Pose& z, const se2::Pose& truth, const Eigen::Vector3d& std)
+{
+	const Eigen::Vector3d e = se2::difference(z, truth);
+	return (e.cwiseAbs().array() > 3 * std.array()).any();
+}
+}  // namespace
+
 bool beyondThreeSigma(
 	const se2::Pose& z, const se2::Pose& truth, const CMeasurementExtractor::TVisualOptions& sigma)
 {
-	const Eigen::Vector3d e = se2::difference(z, truth);
-	return std::abs(e[0]) > 3 * sigma.std_dx || std::abs(e[1]) > 3 * sigma.std_dy || std::abs(e[2]) > 3 * sigma.std_dphi;
+	return beyondThreeOf(z, truth, {sigma.std_dx, sigma.std_dy, sigma.std_dphi});
+}
+
+Eigen::Vector3d measurementStd(const LandmarkMeasurementRecord& m, const CMeasurementExtractor::TVisualOptions& sigma)
+{
+	const double k2 = sigma.predicted_cov_scale * sigma.predicted_cov_scale;
+	const auto sq = [](double v) { return v * v; };
+	return {std::sqrt(sq(sigma.std_dx) + k2 * sq(m.predictedStdX)),
+		std::sqrt(sq(sigma.std_dy) + k2 * sq(m.predictedStdY)),
+		std::sqrt(sq(sigma.std_dphi) + k2 * sq(m.predictedStdPhi))};
+}
+
+double normalizedSquaredError(const se2::Pose& z, const se2::Pose& truth, const Eigen::Vector3d& std)
+{
+	return (se2::difference(z, truth).array() / std.array()).square().sum();
+}
+
+bool beyondThreeSigmaOfItsNoise(
+	const LandmarkMeasurementRecord& m, const se2::Pose& truth, const CMeasurementExtractor::TVisualOptions& sigma)
+{
+	return beyondThreeOf(m.z, truth, measurementStd(m, sigma));
 }
 
 MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRecord>& measurements,
@@ -50,6 +81,7 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 	const CMeasurementExtractor::TVisualOptions& sigma, const CPreFilter::TOptions& prefilter)
 {
 	const CPreFilter filter(prefilter);
+	const Eigen::Vector3d sigmaVisStd(sigma.std_dx, sigma.std_dy, sigma.std_dphi);
 	MeasurementAccuracy out;
 	ErrorList all, accepted;
 	for (const auto& m : measurements)
@@ -66,14 +98,19 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 		const se2::Pose expected = *truthOfIt;
 		const Eigen::Vector3d e = se2::difference(m.z, expected);
 		const bool beyond = beyondThreeSigma(m.z, expected, sigma);
+		const bool beyondItsNoise = beyondThreeSigmaOfItsNoise(m, expected, sigma);
+		const Eigen::Vector3d itsStd = measurementStd(m, sigma);
 		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope, m.Height) == CPreFilter::Verdict::Accepted;
-		out.errors.push_back({m, expected, e, ok, beyond});
+		out.errors.push_back({m, expected, e, ok, beyond, beyondItsNoise});
 		for (ErrorList* list : {&all, &accepted})
 		{
 			if (list == &accepted && !ok) continue;
 			list->position.push_back(std::hypot(e[0], e[1]));
 			list->heading.push_back(std::abs(e[2]));
 			list->beyond += beyond;
+			list->beyondItsNoise += beyondItsNoise;
+			list->neesSigmaVis.push_back(normalizedSquaredError(m.z, expected, sigmaVisStd));
+			list->neesItsNoise.push_back(normalizedSquaredError(m.z, expected, itsStd));
 		}
 	}
 	out.all = all.stats();

@@ -19,6 +19,7 @@
 #include <map>
 #include <optional>
 #include <regex>
+#include <sstream>
 
 using vslam::testing::readFile;
 using vslam::testing::lineCount;
@@ -291,4 +292,61 @@ TEST(VisualPipeline, OracleKindsReplaceOrDropOnlyTheMeasurementsBeyondOrWithinTh
 	const auto bad = runCommand(fe + " --oracle-rawlog " + quoted(dir.file("x")) + " --oracle-kind some");
 	EXPECT_EQ(bad.exitCode, 1) << bad.output;
 	EXPECT_NE(bad.output.find("--oracle-kind 'some'"), std::string::npos) << bad.output;
+}
+
+TEST(VisualPipeline, AccuracyCsvCountsBeyondThreeSigmaOfSigmaVisAndOfTheNoiseTheFilterGivesEach)
+{
+	TempDir dir;
+	const std::string rawlog = writeOracleTestRawlog(dir);
+	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
+	// Sigma_vis small enough for outliers (as above), and the filter weighing
+	// each measurement by its predicted covariance, with a factor that
+	// leaves some beyond and takes some in (measured: 28 and 12 of 100).
+	const double sx = 0.005, sphiDeg = 0.2, k = 0.5;
+	const std::string ini = dir.file("weighted.ini");
+	std::ofstream(ini) << "[vslam_visual]\nstd_dx = " << sx << "\nstd_dy = " << sx << "\nstd_dphi_deg = " << sphiDeg
+					   << "\npredicted_cov_scale = " << k << "\n";
+	const std::string csv = dir.file("accuracy.csv");
+	const auto r = runCommand(quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")) +
+		" --config " + quoted(ini) + " --ground-truth " + quoted(truthFile) + " --accuracy-csv " + quoted(csv));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("beyond 3 sigma of the noise the filter gives each measurement (Sigma_vis + 0.5^2"),
+		std::string::npos) << r.output;
+
+	// Recompute both flags from the file's own columns.
+	std::ifstream in(csv);
+	std::string line;
+	std::getline(in, line);
+	ASSERT_NE(line.find(",beyond_3_sigma_of_its_noise"), std::string::npos) << line;
+	size_t rows = 0, beyondVis = 0, beyondOwn = 0;
+	while (std::getline(in, line))
+	{
+		std::vector<double> c;
+		std::stringstream ss(line);
+		for (std::string cell; std::getline(ss, cell, ',');) c.push_back(std::stod(cell));
+		ASSERT_EQ(c.size(), 18u) << line;
+		const double ex = std::abs(c[2] - c[5]), ey = std::abs(c[3] - c[6]);
+		const double ephi = std::abs(mrpt::math::wrapToPi((c[4] - c[7]) * M_PI / 180)) * 180 / M_PI;
+		const bool vis = ex > 3 * sx || ey > 3 * sx || ephi > 3 * sphiDeg;
+		const auto own = [&](double s, double predicted) { return 3 * std::sqrt(s * s + k * k * predicted * predicted); };
+		const bool wide = ex > own(sx, c[13]) || ey > own(sx, c[14]) || ephi > own(sphiDeg, c[15]);
+		// The file rounds to 1e-5 m and 1e-4 deg: a value that close to its
+		// threshold may fall either way.
+		const auto near = [](double e, double threshold) { return std::abs(e - threshold) < 1e-3 * threshold; };
+		const bool onEdge = near(ex, 3 * sx) || near(ey, 3 * sx) || near(ephi, 3 * sphiDeg) || near(ex, own(sx, c[13])) ||
+			near(ey, own(sx, c[14])) || near(ephi, own(sphiDeg, c[15]));
+		if (!onEdge)
+		{
+			EXPECT_EQ(c[12] != 0, vis) << line;
+			EXPECT_EQ(c[17] != 0, wide) << line;
+		}
+		rows++, beyondVis += c[12] != 0, beyondOwn += c[17] != 0;
+	}
+	std::printf("%zu measurements: %zu beyond 3 sigma of Sigma_vis, %zu of the noise the filter gives each\n", rows,
+		beyondVis, beyondOwn);
+	EXPECT_GT(rows, 10u);
+	EXPECT_GT(beyondVis, 0u);
+	EXPECT_LE(beyondOwn, beyondVis);  // the filter's noise is never below Sigma_vis
+	EXPECT_GT(beyondOwn, 0u);
+	EXPECT_LT(beyondOwn, beyondVis);  // and here the weighting takes some in
 }
