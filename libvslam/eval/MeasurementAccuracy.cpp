@@ -98,8 +98,8 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 		const se2::Pose expected = *truthOfIt;
 		const Eigen::Vector3d e = se2::difference(m.z, expected);
 		const bool beyond = beyondThreeSigma(m.z, expected, sigma);
-		const bool beyondItsNoise = beyondThreeSigmaOfItsNoise(m, expected, sigma);
 		const Eigen::Vector3d itsStd = measurementStd(m, sigma);
+		const bool beyondItsNoise = beyondThreeOf(m.z, expected, itsStd);
 		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope, m.Height) == CPreFilter::Verdict::Accepted;
 		out.errors.push_back({m, expected, e, ok, beyond, beyondItsNoise});
 		for (ErrorList* list : {&all, &accepted})

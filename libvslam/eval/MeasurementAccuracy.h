@@ -87,7 +87,7 @@ bool beyondThreeSigma(const se2::Pose& z, const se2::Pose& truth, const CMeasure
  * predicted covariance (CMeasurementExtractor::extract). */
 Eigen::Vector3d measurementStd(const LandmarkMeasurementRecord& m, const CMeasurementExtractor::TVisualOptions& sigma);
 
-/** e^T D^-1 e of m's error against the truth, D = diag(std^2). */
+/** e^T D^-1 e, e the error of z against the truth, D = diag(std^2). */
 double normalizedSquaredError(const se2::Pose& z, const se2::Pose& truth, const Eigen::Vector3d& std);
 
 /** True if m is more than 3 of its measurementStd from the truth in x, y or
