@@ -156,3 +156,31 @@ TEST(DescriptorCodec, Uint4ChangesMatchingDistancesByAFewPercent)
 	EXPECT_GE(ratios.front(), 0.8);  // 0.92 measured
 	EXPECT_LE(ratios.back(), 1.2);  // 1.15 measured
 }
+
+TEST(DescriptorCodec, ProjectedCodesAreALinearOrthonormalProjectionRoundedToItsStep)
+{
+	std::mt19937 rng(5);
+	constexpr int n = 300, dims = 16;
+	const cv::Mat a = siftLikeDescriptors(rng, n), b = siftLikeDescriptors(rng, n);
+	const DescriptorCodec codec(DescriptorCodec::Kind::Projected, dims);
+	const auto project = [&](const cv::Mat& d) { return codec.toMatchingSpace(d); };
+	const cv::Mat pa = project(a), pb = project(b), mean = project(0.5 * (a + b));
+	ASSERT_EQ(pa.cols, dims);
+	// Linear: each code is within half a step of the exact value (the mean,
+	// unlike a sum, stays inside the codes' range), so the projection of the
+	// mean is the mean of the projections within one step.
+	EXPECT_LE(cv::norm(mean - 0.5 * (pa + pb), cv::NORM_INF), DescriptorCodec::kProjectedStep + 1e-4);
+	// Orthonormal rows: a difference keeps dims/128 of its squared length on
+	// average (0.125 here), and never more than all of it (plus rounding).
+	double kept = 0;
+	for (int r = 0; r < n; r++)
+	{
+		const double full = cv::norm(a.row(r) - b.row(r), cv::NORM_L2SQR);
+		const double projected = cv::norm(pa.row(r) - pb.row(r), cv::NORM_L2SQR);
+		EXPECT_LE(std::sqrt(projected), std::sqrt(full) + DescriptorCodec::kProjectedStep * std::sqrt(double(dims)));
+		kept += projected / full;
+	}
+	EXPECT_NEAR(kept / n, double(dims) / 128, 0.2 * dims / 128);
+	// A descriptor of another length is refused, not read past its end.
+	EXPECT_THROW(codec.encode(cv::Mat::ones(3, 64, CV_32F)), std::invalid_argument);
+}

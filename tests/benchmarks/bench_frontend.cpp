@@ -16,10 +16,14 @@
  * Also the descriptor matching of the pose stage alone, ours against
  * OpenCV's brute-force matcher (the one it replaced), on a x b random
  * SIFT-sized descriptors:
- *   bench_frontend --benchmark_filter='Match'  */
+ *   bench_frontend --benchmark_filter='Match'
+ * and the search codec's projection, ours against cv::gemm (which calls the
+ * system's BLAS):
+ *   bench_frontend --benchmark_filter='Project'  */
 #include <benchmark/benchmark.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
@@ -173,8 +177,30 @@ void MatchDescriptorsOpenCvBruteForce(benchmark::State& state)
 		benchmark::DoNotOptimize(knn);
 	}
 }
+
+/** The search codec's 16-D projection of one image's descriptors (the
+ * database search's first step), ours against the cv::gemm it replaced. */
+void ProjectDescriptors(benchmark::State& state)
+{
+	const DescriptorCodec codec(DescriptorCodec::Kind::Projected, 16);
+	const cv::Mat d = randomDescriptors(static_cast<int>(state.range(0)), 1);
+	for (auto _ : state) benchmark::DoNotOptimize(codec.encode(d));
+}
+
+void ProjectDescriptorsOpenCvGemm(benchmark::State& state)
+{
+	const cv::Mat d = randomDescriptors(static_cast<int>(state.range(0)), 1);
+	const cv::Mat projection = randomDescriptors(16, 2);
+	for (auto _ : state)
+	{
+		const cv::Mat projected = d * projection.t();
+		benchmark::DoNotOptimize(projected.data);
+	}
+}
 }  // namespace
 
+BENCHMARK(ProjectDescriptors)->Arg(600)->Unit(benchmark::kMicrosecond);
+BENCHMARK(ProjectDescriptorsOpenCvGemm)->Arg(600)->Unit(benchmark::kMicrosecond);
 BENCHMARK(MatchDescriptors)->Args({600, 300})->Args({600, 600})->Unit(benchmark::kMillisecond);
 BENCHMARK(MatchDescriptorsOpenCvBruteForce)->Args({600, 300})->Args({600, 600})->Unit(benchmark::kMillisecond);
 
