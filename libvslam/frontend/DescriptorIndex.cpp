@@ -1,3 +1,4 @@
+#include <libvslam/frontend/BestBinFirstDescriptorIndex.h>
 #include <libvslam/frontend/DescriptorIndex.h>
 #include <libvslam/frontend/FlannDescriptorIndex.h>
 #include <libvslam/frontend/KdTreeDescriptorIndex.h>
@@ -14,7 +15,9 @@ std::unique_ptr<DescriptorIndex> DescriptorIndex::create(
 	if (options.search_index == "kdtree") return std::make_unique<KdTreeDescriptorIndex>(codec, options.search_eps);
 	if (options.search_index == "flann")
 		return std::make_unique<FlannDescriptorIndex>(codec, options.search_flann_trees, options.search_checks);
-	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (kdtree | flann)");
+	if (options.search_index == "bbf")
+		return std::make_unique<BestBinFirstDescriptorIndex>(codec, options.search_bbf_compared);
+	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (kdtree | flann | bbf)");
 }
 
 void DescriptorIndex::add(int64_t owner, const cv::Mat& siftDescriptors)

@@ -11,7 +11,9 @@
  *  - kdtree (KdTreeDescriptorIndex.h): nanoflann, eps-approximate;
  *  - flann (FlannDescriptorIndex.h): OpenCV FLANN randomized k-d trees
  *    searched with a bounded number of leaf checks, so a query costs about
- *    the same whatever the map's size.
+ *    the same whatever the map's size;
+ *  - bbf (BestBinFirstDescriptorIndex.h): k-d trees with leaf buckets,
+ *    best bin first with a bounded number of codes compared.
  * The public methods are non-virtual and keep the row bookkeeping; the
  * back-ends implement the protected virtuals.
  */

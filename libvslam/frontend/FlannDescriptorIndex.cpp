@@ -1,4 +1,5 @@
 #include <libvslam/frontend/FlannDescriptorIndex.h>
+#include <libvslam/frontend/IndexLevels.h>
 
 #include <algorithm>
 
@@ -11,13 +12,10 @@ constexpr uint64_t kFlannSeed = 0x5eed;
  * may take their places. */
 constexpr int kNeighbours = 2;
 constexpr int kSpareForRemoved = 2;
-/** A level merges into the one before while that one holds at most this
- * many times its rows: each level then holds more than kMergeRatio times
- * the next, so a map of L landmarks has at most about log_kMergeRatio(L)
- * of them. Each
- * level costs a search its own per-query overhead, which dominates with
- * few checks, so fewer, larger levels search faster, for rebuilds of
- * O(kMergeRatio) times each row. */
+/** The logarithmic method's merge ratio (IndexLevels.h). Each level costs
+ * a search its own per-query overhead, which dominates with few checks, so
+ * fewer, larger levels search faster, for rebuilds of O(kMergeRatio) times
+ * each row. */
 constexpr int kMergeRatio = 4;
 }  // namespace
 
@@ -42,17 +40,7 @@ void FlannDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors
 	Level added;
 	added.codes = m_codec.toMatchingSpace(siftDescriptors);
 	added.firstRow = firstRow;
-	m_levels.push_back(std::move(added));
-	while (m_levels.size() >= 2 && m_levels[m_levels.size() - 2].codes.rows <= kMergeRatio * m_levels.back().codes.rows)
-	{
-		Level last = std::move(m_levels.back());
-		m_levels.pop_back();
-		Level& into = m_levels.back();
-		into.index.reset();  // it reads the codes replaced here
-		cv::Mat merged;
-		cv::vconcat(into.codes, last.codes, merged);
-		into.codes = merged;
-	}
+	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	build(m_levels.back());
 }
 

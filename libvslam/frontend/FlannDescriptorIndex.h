@@ -4,12 +4,9 @@
  * searched with a bounded number of leaf checks per query, so a query's
  * cost grows with the logarithm of the map, not with the map.
  *
- * FLANN's trees are static, so insertion follows the logarithmic method:
- * the rows live in levels, each a FLANN index over a contiguous block of
- * codes; a new landmark is a new level, and while a level is not much
- * larger than the one after it the two merge (one rebuild). Each row is
- * rebuilt O(log n) times over the map's life and a search visits O(log n)
- * levels, each with the same check budget.
+ * FLANN's trees are static, so insertion follows the logarithmic method
+ * (IndexLevels.h): a search visits O(log n) levels, each with the same
+ * check budget.
  *
  * FLANN draws its random split choices from cv::theRNG(): every build runs
  * on a fixed seed and restores the caller's generator, so results are the
@@ -39,6 +36,12 @@ class FlannDescriptorIndex : public DescriptorIndex
 		cv::Mat codes;  //!< CV_32F, one row per descriptor (the index reads it)
 		size_t firstRow = 0;  //!< levels hold consecutive rows
 		std::unique_ptr<cv::flann::Index> index;
+		int rows() const { return codes.rows; }
+		cv::Mat takeCodes()
+		{
+			index.reset();  // it reads the codes
+			return codes;
+		}
 	};
 	void build(Level& level) const;
 

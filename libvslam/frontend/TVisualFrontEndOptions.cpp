@@ -77,10 +77,11 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readBool(c, s, "recognition_structure_uncertainty", recognition_structure_uncertainty);
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
-	search_index = readWord("search_index", search_index, {"kdtree", "flann"});
+	search_index = readWord("search_index", search_index, {"kdtree", "flann", "bbf"});
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
 	search_flann_trees = readCount("search_flann_trees", search_flann_trees, 1, 16);
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
+	search_bbf_compared = readCount("search_bbf_compared", search_bbf_compared, 1, 100000000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
 	descriptor_storage = readWord("descriptor_storage", descriptor_storage, {"float", "uint8", "uint4", "projected"});
 	descriptor_dims = readCount("descriptor_dims", descriptor_dims, 4, 128);
@@ -153,10 +154,11 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Add each point's depth uncertainty from creation to the predicted measurement uncertainty (6-DOF solve)");
 	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
-	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks)");
+	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks) | bbf (bounded codes compared)");
 	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
 	c.write(s, "search_flann_trees", search_flann_trees, 30, 10, "flann: randomized k-d trees per index level");
 	c.write(s, "search_checks", search_checks, 30, 10, "flann: leaves checked per query and level");
+	c.write(s, "search_bbf_compared", search_bbf_compared, 30, 10, "bbf: codes compared per query and level (leaves of 8)");
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
 	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | uint4 (64 B) | projected (descriptor_dims B)");
 	c.write(s, "descriptor_dims", descriptor_dims, 30, 10, "Dimensions kept by the projected storage");

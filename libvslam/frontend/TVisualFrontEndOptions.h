@@ -114,14 +114,18 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * (0: no test). */
 	double recognition_ambiguity_min_gap = 0;
 	/** The descriptor index (DescriptorIndex.h): "kdtree" (nanoflann,
-	 * eps-approximate) or "flann" (OpenCV FLANN randomized k-d trees,
-	 * bounded checks: cost per query nearly independent of the map size). */
+	 * eps-approximate), "flann" (OpenCV FLANN randomized k-d trees,
+	 * bounded checks: cost per query nearly independent of the map size)
+	 * or "bbf" (k-d trees with leaf buckets searched best bin first, a
+	 * bounded number of codes compared). */
 	std::string search_index = "flann";
 	/** kdtree: nanoflann's eps (0: exact). */
 	double search_eps = 2.0;
 	/** flann: randomized trees per level, and leaves checked per query and level. */
 	int search_flann_trees = 1;
 	int search_checks = 32;
+	/** bbf: codes compared per query and level (whole leaves of 8). */
+	int search_bbf_compared = 128;
 	/** The k-d tree votes in a random projection of the descriptors to this
 	 * many dimensions (signed bytes; 128: no projection). Candidates are
 	 * then verified with the stored descriptors. */
