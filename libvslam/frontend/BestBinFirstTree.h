@@ -123,8 +123,9 @@ void BestBinFirstTree::search(const float* query, int maxCompared, Nearest& near
 		for (int32_t s = branch.step; s >= 0; s = scratch.steps[s].previous) scratch.chain.push_back(s);
 		for (auto s = scratch.chain.rbegin(); s != scratch.chain.rend(); ++s)
 			offset[scratch.steps[*s].dim] = scratch.steps[*s].offset;
-		float bound = branch.bound;
-		int32_t step = branch.step, node = branch.node;
+		const float bound = branch.bound;  // the nearer child keeps its cell's offsets
+		const int32_t step = branch.step;
+		int32_t node = branch.node;
 		while (m_nodes[node].dim >= 0)
 		{
 			const Node& n = m_nodes[node];
