@@ -118,7 +118,7 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * bounded checks: cost per query nearly independent of the map size)
 	 * or "bbf" (k-d trees with leaf buckets searched best bin first, a
 	 * bounded number of codes compared). */
-	std::string search_index = "bbf";
+	std::string search_index = "flann";
 	/** kdtree: nanoflann's eps (0: exact). */
 	double search_eps = 2.0;
 	/** flann: randomized trees per level, and leaves checked per query and level. */
