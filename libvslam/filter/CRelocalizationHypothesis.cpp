@@ -1,10 +1,12 @@
 #include <libvslam/filter/CRelocalizationHypothesis.h>
 #include <libvslam/models/CLandmarkModel.h>
+#include <libvslam/models/Gaussian.h>
 #include <libvslam/models/MeasurementUpdate.h>
 #include <mrpt/bayes/CParticleFilterCapable.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace vslam;
 
@@ -47,24 +49,50 @@ double CRelocalizationHypothesis::logLikelihood(
 	return sum;
 }
 
+std::vector<CDualProposal> vslam::seedProposals(
+	const std::vector<KnownMeasurement>& ms, const LandmarkBank& bank, HypothesisSeed seed)
+{
+	const auto dualOf = [&](const KnownMeasurement& k) {
+		return landmarkModel(k.m->kind())
+			.dualProposal(bank[k.slot], *k.m, HeadingPrior::Uniform());
+	};
+	std::vector<CDualProposal> duals;
+	if (seed == HypothesisSeed::EveryPoseMeasurement)
+		for (const auto& k : ms)
+			if (k.m->kind() == LandmarkKind::Pose)
+				if (auto q = dualOf(k); q.valid()) duals.push_back(q);
+	if (duals.empty() && !ms.empty())
+		if (auto q = dualOf(ms[mostInformativeMeasurement(ms)]); q.valid())
+			duals.push_back(q);
+	return duals;
+}
+
 bool CRelocalizationHypothesis::start(
 	const std::vector<KnownMeasurement>& ms, const LandmarkBank& bank, size_t n,
-	const CRobustLikelihood& likelihood, mrpt::random::CRandomGenerator& rng)
+	const CRobustLikelihood& likelihood, mrpt::random::CRandomGenerator& rng,
+	HypothesisSeed seed)
 {
 	clear();
 	if (ms.empty() || n == 0) return false;
 	m_bank = bank;
-	const auto& seed = ms[mostInformativeMeasurement(ms)];
-	const CDualProposal q = landmarkModel(seed.m->kind())
-								.dualProposal(m_bank[seed.slot], *seed.m, HeadingPrior::Uniform());
-	if (!q.valid()) return false;
+	const std::vector<CDualProposal> duals = seedProposals(ms, m_bank, seed);
+	if (duals.empty()) return false;
+	// An equal share of the samples from each proposal; the importance
+	// density is then their mixture (deterministic mixture sampling).
+	const double logShare = -std::log(static_cast<double>(duals.size()));
+	const auto logProposalDensity = [&](const se2::Pose& s) {
+		if (duals.size() == 1) return duals.front().logDensity(s);
+		double sum = -std::numeric_limits<double>::infinity();
+		for (const auto& q : duals) sum = logSumExp(sum, logShare + q.logDensity(s));
+		return sum;
+	};
 	std::vector<double> logW(n);
 	m_poses.resize(n);
 	for (size_t i = 0; i < n; i++)
 	{
-		m_poses[i] = q.sample(rng);
+		m_poses[i] = duals[i % duals.size()].sample(rng);
 		// Uniform prior: importance factor = likelihood / proposal density.
-		logW[i] = logLikelihood(m_poses[i], ms, likelihood) - q.logDensity(m_poses[i]);
+		logW[i] = logLikelihood(m_poses[i], ms, likelihood) - logProposalDensity(m_poses[i]);
 	}
 	resample(logW);
 	m_support = 1;
