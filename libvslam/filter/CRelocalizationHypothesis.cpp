@@ -81,7 +81,6 @@ bool CRelocalizationHypothesis::start(
 	// density is then their mixture (deterministic mixture sampling).
 	const double logShare = -std::log(static_cast<double>(duals.size()));
 	const auto logProposalDensity = [&](const se2::Pose& s) {
-		if (duals.size() == 1) return duals.front().logDensity(s);
 		double sum = -std::numeric_limits<double>::infinity();
 		for (const auto& q : duals) sum = logSumExp(sum, logShare + q.logDensity(s));
 		return sum;
