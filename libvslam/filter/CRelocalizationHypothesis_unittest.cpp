@@ -51,14 +51,7 @@ namespace
 LandmarkBank twoPoseLandmarks()
 {
 	LandmarkBank bank;
-	for (const se2::Pose& l : {se2::Pose{2, 0, 0}, se2::Pose{0, 2, M_PI / 2}})
-	{
-		LandmarkEstimate e;
-		e.kind = LandmarkKind::Pose;
-		e.mean << l.x, l.y, l.phi;
-		e.cov = Eigen::Matrix3d::Identity() * 1e-4;
-		bank.push_back(e);
-	}
+	for (const se2::Pose& l : {se2::Pose{2, 0, 0}, se2::Pose{0, 2, M_PI / 2}}) bank.push_back(poseLandmark(l));
 	return bank;
 }
 

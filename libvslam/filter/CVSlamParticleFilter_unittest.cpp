@@ -12,15 +12,6 @@ using namespace vslam::testing;
 
 namespace
 {
-LandmarkEstimate poseLandmark(const se2::Pose& p, double var = 1e-4)
-{
-	LandmarkEstimate l;
-	l.kind = LandmarkKind::Pose;
-	l.mean = se2::toVector(p);
-	l.cov = Eigen::Matrix3d::Identity() * var;
-	return l;
-}
-
 /** Weighted mean and covariance of the particle poses. */
 void weightedMoments(const CVSlamParticleFilter& f, Eigen::Vector3d& mean, Eigen::Matrix3d& cov)
 {

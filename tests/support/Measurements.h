@@ -16,6 +16,16 @@ inline LandmarkMeasurement poseMeasurement(
 	return m;
 }
 
+/** A pose landmark at p, its covariance var times the identity. */
+inline LandmarkEstimate poseLandmark(const se2::Pose& p, double var = 1e-4)
+{
+	LandmarkEstimate l;
+	l.kind = LandmarkKind::Pose;
+	l.mean = se2::toVector(p);
+	l.cov = Eigen::Matrix3d::Identity() * var;
+	return l;
+}
+
 inline LandmarkMeasurement rangeBearingMeasurement(
 	int64_t id, double range, double bearing, double stdR = 0.05,
 	double stdB = 0.02, const se2::Pose& sensor = {0, 0, 0})
