@@ -7,13 +7,13 @@
  * (LD_PRELOAD=libvslam_obs.so) and fed to vslam, so the front-end and the
  * filter can be tested and timed separately.
  *
- *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]
+ *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set SECTION.KEY=VALUE ...]
  *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE [--oracle-kind K]]]
  *
  * With --ground-truth (TUM or rbpf-slam path of the robot, e.g. from
  * vslam-simul), it also prints how right the measurements are: errors of
  * all measurements and of those the pre-filter ([vslam_prefilter] of the
- * INI) accepts, and the share of accepted ones beyond 3 sigma of
+ * INI and --set) accepts, and the share of accepted ones beyond 3 sigma of
  * [vslam_visual]'s Sigma_vis; --accuracy-csv writes every measurement
  * with its truth. --oracle-rawlog writes a second rawlog, the same but with
  * every landmark measurement replaced by its truth (same landmarks, same
@@ -25,6 +25,7 @@
  * of Sigma_vis, `inliers` only those within, and `drop-outliers` keeps the
  * measured values but removes those beyond 3 sigma.
  */
+#include <libvslam/app/CVSlamApp.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/IniText.h>
@@ -48,6 +49,25 @@
 
 namespace
 {
+vslam::TVSlamFilterOptions loadFilterOptions(
+	const std::string& iniFile, const std::vector<vslam::config::Override>& overrides)
+{
+	using namespace vslam;
+	TVSlamFilterOptions filter;
+	try
+	{
+		const auto cfg =
+			config::parseIniWithOverrides(iniFile.empty() ? std::string() : config::readIniFile(iniFile), overrides);
+		config::checkNoUnknownKeys(cfg, CVSlamApp::knownKeys());
+		filter.loadFromConfig(cfg);
+	}
+	catch (const ConfigError& e)
+	{
+		throw ConfigError((iniFile.empty() ? std::string("--set") : "'" + iniFile + "'") + ": " + e.what());
+	}
+	return filter;
+}
+
 void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	const std::map<int64_t, double>& creationTimes, const std::string& groundTruthFile,
 	const vslam::TVSlamFilterOptions& filter, const std::string& csvFile)
@@ -81,14 +101,15 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	FILE* f = std::fopen(csvFile.c_str(), "wt");
 	if (!f) throw InputError("cannot create '" + csvFile + "'");
 	std::fprintf(f, "t,landmark,dx,dy,dphi_deg,true_dx,true_dy,true_dphi_deg,ProjErrRMS,NPoints,Slope,accepted,"
-		"beyond_3_sigma,pred_std_dx,pred_std_dy,pred_std_dphi_deg,Height,beyond_3_sigma_of_its_noise\n");
+		"beyond_3_sigma,pred_std_dx,pred_std_dy,pred_std_dphi_deg,Height,beyond_3_sigma_of_its_noise,Slope_std\n");
 	for (const auto& e : a.errors)
-		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d,%.5f,%.5f,%.4f,%.5f,%d\n", e.measurement.t,
+		std::fprintf(f, "%.6f,%lld,%.5f,%.5f,%.4f,%.5f,%.5f,%.4f,%.4f,%u,%.5f,%d,%d,%.5f,%.5f,%.4f,%.5f,%d,%.6g\n", e.measurement.t,
 			static_cast<long long>(e.measurement.landmarkID), e.measurement.z.x, e.measurement.z.y,
 			e.measurement.z.phi * 180 / M_PI, e.expected.x, e.expected.y, e.expected.phi * 180 / M_PI,
 			e.measurement.ProjErrRMS, e.measurement.NPoints, e.measurement.Slope, e.accepted ? 1 : 0,
 			e.beyond3Sigma ? 1 : 0, e.measurement.predictedStdX, e.measurement.predictedStdY,
-			e.measurement.predictedStdPhi * 180 / M_PI, e.measurement.Height, e.beyond3SigmaOfItsNoise ? 1 : 0);
+			e.measurement.predictedStdPhi * 180 / M_PI, e.measurement.Height, e.beyond3SigmaOfItsNoise ? 1 : 0,
+			e.measurement.SlopeStd);
 	std::fclose(f);
 }
 
@@ -148,7 +169,7 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 }
 
 const char* kUsage =
-	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set vslam_frontend.KEY=VALUE ...]\n"
+	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set SECTION.KEY=VALUE ...]\n"
 	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE]\n"
 	"                       [--oracle-rawlog FILE [--oracle-kind all|outliers|inliers|drop-outliers]]]\n"
 	"       vslam-frontend --print-default-config\n";
@@ -201,6 +222,9 @@ int main(int argc, const char** argv)
 		if ((!csvFile.empty() || !oracleFile.empty()) && groundTruthFile.empty())
 			throw std::invalid_argument("--accuracy-csv and --oracle-rawlog need --ground-truth");
 		const TVisualFrontEndOptions options = loadFrontEndOptions(iniFile, overrides);
+		// Sigma_vis and the pre-filter of the INI and the --set overrides, for
+		// the accuracy figures; every vslam key checked before the long run.
+		const TVSlamFilterOptions filter = loadFilterOptions(iniFile, overrides);
 
 		const auto start = std::chrono::steady_clock::now();
 		CRawlogReader reader(positional[0]);
@@ -227,7 +251,7 @@ int main(int argc, const char** argv)
 					records.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID,
 						{m->relPose.x(), m->relPose.y(), m->relPose.phi()}, m->ProjErrRMS, m->NPoints, m->Slope,
 						m->Height, std::sqrt(m->relPoseCov(0, 0)), std::sqrt(m->relPoseCov(1, 1)),
-						std::sqrt(m->relPoseCov(2, 2))});
+						std::sqrt(m->relPoseCov(2, 2)), m->SlopeStd});
 				else if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
 					creationTimes[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
 			}
@@ -255,9 +279,6 @@ int main(int argc, const char** argv)
 		std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
 				  << " poorly conditioned (recognition_max_std_*), " << frontEnd.ambiguousRecognitions()
 				  << " ambiguous (recognition_ambiguity_min_gap)\n";
-		// Sigma_vis and the pre-filter of the INI, for the accuracy figures.
-		TVSlamFilterOptions filter;
-		if (!iniFile.empty()) filter.loadFromConfig(config::parseIniWithOverrides(config::readIniFile(iniFile), {}));
 		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, filter, csvFile);
 		if (!oracleFile.empty())
 		{

@@ -35,6 +35,7 @@ struct LandmarkMeasurementRecord
 	/** Predicted std of dx, dy (m) and dtheta (rad) from the pose solve
 	 * (0: not known). */
 	double predictedStdX = 0, predictedStdY = 0, predictedStdPhi = 0;
+	double SlopeStd = 0;  //!< predicted std of Slope (rad; 0: not known)
 };
 
 struct MeasurementErrorStats

@@ -16,6 +16,7 @@ void CPreFilter::TOptions::loadFromConfigFile(
 		readInt(c, s, "min_NPoints", min_NPoints, Range::closed(0, 1e9)));
 	max_Slope = readDouble(c, s, "max_Slope", max_Slope, Range::nonNegative());
 	max_Height = readDouble(c, s, "max_Height", max_Height, Range::nonNegative());
+	Slope_std_factor = readDouble(c, s, "Slope_std_factor", Slope_std_factor, Range::nonNegative());
 }
 
 void CPreFilter::TOptions::saveToConfigFile(
@@ -29,21 +30,24 @@ void CPreFilter::TOptions::saveToConfigFile(
 		"Reject if |Slope| exceeds this [rad] (paper: 0.1)");
 	c.write(s, "max_Height", max_Height, 25, 12,
 		"Reject if |Height| exceeds this [m]; 0: not checked (not in the paper)");
+	c.write(s, "Slope_std_factor", Slope_std_factor, 25, 12,
+		"Reject if |Slope| + this x SlopeStd exceeds max_Slope; 0: |Slope| alone (the paper)");
 }
 
 CPreFilter::Verdict CPreFilter::check(
-	double ProjErrRMS, uint32_t NPoints, double Slope, double Height) const
+	double ProjErrRMS, uint32_t NPoints, double Slope, double Height, double SlopeStd) const
 {
 	// NaN statistics fail the comparisons below, so they are rejected.
 	if (!(ProjErrRMS <= options.max_ProjErrRMS))
 		return Verdict::RejectedProjErrRMS;
 	if (NPoints < options.min_NPoints) return Verdict::RejectedNPoints;
-	if (!(std::abs(Slope) <= options.max_Slope)) return Verdict::RejectedSlope;
+	const double slopeMargin = options.Slope_std_factor > 0 ? options.Slope_std_factor * SlopeStd : 0.0;
+	if (!(std::abs(Slope) + slopeMargin <= options.max_Slope)) return Verdict::RejectedSlope;
 	if (options.max_Height > 0 && !(std::abs(Height) <= options.max_Height)) return Verdict::RejectedHeight;
 	return Verdict::Accepted;
 }
 
 CPreFilter::Verdict CPreFilter::check(const CObservationVisualLandmark& o) const
 {
-	return check(o.ProjErrRMS, o.NPoints, o.Slope, o.Height);
+	return check(o.ProjErrRMS, o.NPoints, o.Slope, o.Height, o.SlopeStd);
 }

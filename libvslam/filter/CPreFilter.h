@@ -7,6 +7,11 @@
  * by default: |Height| > max_Height, the robot's height above the landmark
  * frame implied by the 6-DOF solution, which is 0 for a robot on a level
  * floor whatever the landmark's scale (Slope's twin for the translation).
+ * And Slope's upper confidence bound: with Slope_std_factor k > 0, reject
+ * if |Slope| + k SlopeStd > max_Slope, SlopeStd being the std of Slope the
+ * pose solve predicts (0 where not known: then the paper's rule). A solve
+ * that cannot tell the robot's tilt to within the bound is not trusted for
+ * the pose either.
  */
 #include <mrpt/config/CLoadableOptions.h>
 
@@ -25,6 +30,9 @@ class CPreFilter
 		uint32_t min_NPoints = 10;
 		double max_Slope = 0.1;  //!< on |Slope|, rad
 		double max_Height = 0;  //!< on |Height|, m; 0: not checked
+		/** k in |Slope| + k SlopeStd <= max_Slope; 0: the paper's |Slope|
+		 * <= max_Slope. */
+		double Slope_std_factor = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -47,7 +55,8 @@ class CPreFilter
 	explicit CPreFilter(const TOptions& o) : options(o) {}
 	TOptions options;
 
-	Verdict check(double ProjErrRMS, uint32_t NPoints, double Slope, double Height) const;
+	/** SlopeStd: Slope's predicted std, rad (0: not known). */
+	Verdict check(double ProjErrRMS, uint32_t NPoints, double Slope, double Height, double SlopeStd = 0) const;
 	Verdict check(const CObservationVisualLandmark& obs) const;
 };
 

@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace vslam;
 using V = CPreFilter::Verdict;
@@ -57,4 +58,22 @@ TEST(CPreFilter, ConfigurableRegion)
 	EXPECT_THROW(pf.options.loadFromConfigFile(bad, "p"), ConfigError);
 	mrpt::config::CConfigFileMemory negativeHeight("[p]\nmax_Height = -0.1\n");
 	EXPECT_THROW(pf.options.loadFromConfigFile(negativeHeight, "p"), ConfigError);
+}
+
+TEST(CPreFilter, SlopeStdWidensTheSlopeOnlyWithAFactor)
+{
+	CPreFilter pf;
+	EXPECT_EQ(pf.check(1.0, 50, 0.05, 0, 0.04), V::Accepted);  // the paper's rule: |Slope| alone
+	pf.options.Slope_std_factor = 1;
+	EXPECT_EQ(pf.check(1.0, 50, 0.05, 0, 0.05), V::Accepted);  // 0.05 + 0.05 on the bound
+	EXPECT_EQ(pf.check(1.0, 50, -0.05, 0, 0.06), V::RejectedSlope);
+	EXPECT_EQ(pf.check(1.0, 50, 0.0, 0, std::numeric_limits<double>::infinity()), V::RejectedSlope);
+	EXPECT_EQ(pf.check(1.0, 50, 0.09, 0, 0), V::Accepted);  // not known: |Slope| alone
+	pf.options.Slope_std_factor = 2;
+	EXPECT_EQ(pf.check(1.0, 50, 0.05, 0, 0.03), V::RejectedSlope);
+	mrpt::config::CConfigFileMemory c("[p]\nSlope_std_factor = 1.5\n");
+	pf.options.loadFromConfigFile(c, "p");
+	EXPECT_EQ(pf.options.Slope_std_factor, 1.5);
+	mrpt::config::CConfigFileMemory negative("[p]\nSlope_std_factor = -1\n");
+	EXPECT_THROW(pf.options.loadFromConfigFile(negative, "p"), ConfigError);
 }

@@ -121,6 +121,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		o->ProjErrRMS = m->ProjErrRMS;
 		o->NPoints = static_cast<uint32_t>(m->NPoints);
 		o->Slope = m->Slope;
+		o->SlopeStd = m->stdSlope;
 		o->Height = m->robotInLandmark.z();
 		o->sensorPoseOnRobot = obs.cameraPose;
 		o->relPoseCov = mrpt::math::CMatrixDouble33(m->covariance);

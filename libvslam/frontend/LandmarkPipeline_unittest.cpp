@@ -318,12 +318,15 @@ TEST(ImageCalibration, UnusableCalibrationsAreErrorsNamingTheImage)
 namespace
 {
 /** Measurements against their truth: {RMS position error, mean predicted
- * position std, RMS heading error, mean predicted heading std}. Position:
- * the RMS of the 2-D error against the largest axis std (they agree within
- * sqrt(2) whatever the shape of the error ellipse). */
+ * position std, RMS heading error, mean predicted heading std, RMS Slope,
+ * mean predicted Slope std}. Position: the RMS of the 2-D error against
+ * the largest axis std (they agree within sqrt(2) whatever the shape of the
+ * error ellipse); Slope likewise, its truth being 0 (the 2-D tilt's norm,
+ * its std along the tilt's direction). */
 struct ScatterAgainstPrediction
 {
-	double squaredPosition = 0, squaredHeading = 0, predictedPosition = 0, predictedHeading = 0;
+	double squaredPosition = 0, squaredHeading = 0, squaredSlope = 0;
+	double predictedPosition = 0, predictedHeading = 0, predictedSlope = 0;
 	int n = 0;
 
 	void add(const VisualMeasurement& m, const mrpt::poses::CPose2D& truth)
@@ -333,19 +336,22 @@ struct ScatterAgainstPrediction
 		squaredHeading += std::pow(mrpt::math::wrapToPi<double>(m.landmarkInRobot.phi() - truth.phi()), 2);
 		predictedPosition += m.stdPosition;
 		predictedHeading += m.stdHeading;
+		squaredSlope += m.Slope * m.Slope;
+		predictedSlope += m.stdSlope;
 		n++;
 	}
-	std::array<double, 4> result() const
+	std::array<double, 6> result() const
 	{
-		return {std::sqrt(squaredPosition / n), predictedPosition / n, std::sqrt(squaredHeading / n), predictedHeading / n};
+		return {std::sqrt(squaredPosition / n), predictedPosition / n, std::sqrt(squaredHeading / n),
+			predictedHeading / n, std::sqrt(squaredSlope / n), predictedSlope / n};
 	}
 };
 
 /** An exact landmark (no pixel noise at creation) of `scene`, recognized
  * `trials` times from `query` with pixel noise: the empirical standard
- * deviations of the position and heading errors, and the mean predicted
- * ones. */
-std::array<double, 4> predictedAgainstEmpirical(const Scene& scene, const mrpt::poses::CPose2D& query, int trials)
+ * deviations of the position, heading and Slope errors, and the mean
+ * predicted ones. */
+std::array<double, 6> predictedAgainstEmpirical(const Scene& scene, const mrpt::poses::CPose2D& query, int trials)
 {
 	std::mt19937 rng(11);
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
@@ -353,7 +359,7 @@ std::array<double, 4> predictedAgainstEmpirical(const Scene& scene, const mrpt::
 	for (size_t i = 0; i < path.size(); i++) views.push_back(creationView(view(scene, path[i], rng, 0.0), path[i], i));
 	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, TVisualFrontEndOptions());
 	EXPECT_TRUE(created.landmark) << created.why;
-	if (!created.landmark) return {0, 0, 0, 0};
+	if (!created.landmark) return {0, 0, 0, 0, 0, 0};
 	const mrpt::poses::CPose2D truth = path.back() - query;
 	ScatterAgainstPrediction scatter;
 	for (int k = 0; k < trials; k++)
@@ -378,6 +384,8 @@ TEST(LandmarkRecognizer, PredictedUncertaintyMatchesTheScatterAndGrowsForASmallP
 	EXPECT_LT(w[1], w[0] * 1.5);
 	EXPECT_GT(w[3], 0.7 * w[2]);
 	EXPECT_LT(w[3], 1.5 * w[2]);
+	EXPECT_GT(w[5], w[4] / std::sqrt(2.0) * 0.7);
+	EXPECT_LT(w[5], w[4] * 1.5);
 
 	// The same number of points on a 1 m x 0.5 m patch: worse geometry,
 	// larger predicted (and actual) heading uncertainty.
@@ -385,12 +393,18 @@ TEST(LandmarkRecognizer, PredictedUncertaintyMatchesTheScatterAndGrowsForASmallP
 	for (auto& p : patch.points) p = cv::Point3d(4.5 + 0.25 * (p.x - 4.5), 0.25 * p.y, 1.0 + 0.25 * (p.z - 1.2));
 	const auto s = predictedAgainstEmpirical(patch, query, 150);
 	std::printf("position rms / predicted std: wide %.4f / %.4f m, patch %.4f / %.4f m\n"
-				"heading rms / predicted std: wide %.3f / %.3f deg, patch %.3f / %.3f deg\n",
-		w[0], w[1], s[0], s[1], w[2] / kDeg, w[3] / kDeg, s[2] / kDeg, s[3] / kDeg);
+				"heading rms / predicted std: wide %.3f / %.3f deg, patch %.3f / %.3f deg\n"
+				"Slope rms / predicted std: wide %.3f / %.3f deg, patch %.3f / %.3f deg\n",
+		w[0], w[1], s[0], s[1], w[2] / kDeg, w[3] / kDeg, s[2] / kDeg, s[3] / kDeg, w[4] / kDeg, w[5] / kDeg,
+		s[4] / kDeg, s[5] / kDeg);
 	EXPECT_GT(s[3], 2 * w[3]);
 	EXPECT_GT(s[2], 2 * w[2]);
 	EXPECT_GT(s[3], 0.7 * s[2]);
 	EXPECT_LT(s[3], 1.5 * s[2]);
+	EXPECT_GT(s[5], 2 * w[5]);
+	EXPECT_GT(s[4], 2 * w[4]);
+	EXPECT_GT(s[5], s[4] / std::sqrt(2.0) * 0.7);
+	EXPECT_LT(s[5], s[4] * 1.5);
 }
 
 namespace
@@ -399,7 +413,7 @@ namespace
  * straight 0.4 m forward path with 0.5 px pixel noise, each recognized once
  * from `query` with the same noise: {RMS position error, mean predicted
  * position std, RMS heading error, mean predicted heading std}. */
-std::array<double, 4> scatterOfRebuiltLandmarks(
+std::array<double, 6> scatterOfRebuiltLandmarks(
 	const Scene& scene, const mrpt::poses::CPose2D& query, int trials, const TVisualFrontEndOptions& o)
 {
 	std::mt19937 rng(21);

@@ -39,6 +39,7 @@ VisualMeasurement measurementFromPnP(const cv::Mat& rvec, const cv::Mat& tvec, c
 	m.robotInLandmark = cameraInLandmark + (mrpt::poses::CPose3D() - mount);
 	const auto Rr = m.robotInLandmark.getRotationMatrix();
 	m.Slope = std::acos(std::clamp(Rr(2, 2), -1.0, 1.0));
+	m.tilt = {Rr(0, 2), Rr(1, 2)};
 	const mrpt::poses::CPose2D robotPlanar(m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw());
 	m.landmarkInRobot = mrpt::poses::CPose2D() - robotPlanar;
 	return m;
@@ -66,6 +67,17 @@ void setPredictedCovariance(VisualMeasurement& m, const Eigen::Matrix3d& cov)
 												 .eigenvalues()
 												 .maxCoeff()));
 	m.stdHeading = std::sqrt(std::max(0.0, cov(2, 2)));
+}
+
+/** The predicted std of Slope = |tilt| from the tilt's 2x2 covariance:
+ * along the tilt's direction, or where the tilt is nearly zero (and its
+ * direction undefined) along the most uncertain one. */
+double slopeStd(const Eigen::Vector2d& tilt, const Eigen::Matrix2d& cov)
+{
+	if (tilt.norm() < 1e-9)
+		return std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov).eigenvalues().maxCoeff()));
+	const Eigen::Vector2d u = tilt.normalized();
+	return std::sqrt(std::max(0.0, u.dot(cov * u)));
 }
 
 /** The planar refinement of a 6-DOF measurement `m` (recognition_planar):
@@ -233,38 +245,46 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 		if (const auto other = competingPose(inlierObject, inlierPixels, image.camera.K(), pose))
 			m.ambiguityGap = reprojectionCostGap(pose, *other, inlierObject.size());
 	}
-	if (o.recognition_planar) return planarMeasurement(m, refinedInliers, object, pixels, image.camera.K(), mount, o);
 
 	// Predicted uncertainty: the pose covariance of the least-squares fit
 	// over the inliers (pixel noise sigma: their RMS error, at least
 	// kLeastPixelNoisePx; with recognition_structure_uncertainty also each
-	// point's depth uncertainty), carried to (dx, dy, dtheta) by a
-	// numerical Jacobian.
+	// point's depth uncertainty), carried to (dx, dy, dtheta) and to the
+	// tilt by a numerical Jacobian.
 	std::vector<float> inlierDepthStd;  // empty: the points taken as exact
 	if (o.recognition_structure_uncertainty && lm.depthStd.size() == lm.points.size())
 		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[matches[i].second]);
 	// The landmark was built by this camera on this mount.
 	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
 	Eigen::Matrix<double, 6, 6> poseCov;
-	if (!poseCovariance(poseSolveResiduals(inlierObject, inlierDepthStd, creationCamera, rvec, tvec, image.camera.K()),
-			std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov))
-	{
-		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
-		m.covariance.setConstant(std::numeric_limits<double>::infinity());
-		return m;
-	}
-	Eigen::Matrix<double, 3, 6> F;
-	for (int k = 0; k < 6; k++)
+	const bool conditioned = poseCovariance(
+		poseSolveResiduals(inlierObject, inlierDepthStd, creationCamera, rvec, tvec, image.camera.K()),
+		std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov);
+	Eigen::Matrix<double, 3, 6> F;  // d(dx, dy, dtheta) / d(rvec, tvec)
+	Eigen::Matrix<double, 2, 6> G;  // d tilt / d(rvec, tvec)
+	for (int k = 0; conditioned && k < 6; k++)
 	{
 		constexpr double h = 1e-6;
 		cv::Mat rp = rvec.clone(), tp = tvec.clone(), rm = rvec.clone(), tm = tvec.clone();
 		(k < 3 ? rp : tp).at<double>(k % 3) += h;
 		(k < 3 ? rm : tm).at<double>(k % 3) -= h;
-		const auto a = measurementFromPnP(rp, tp, mount).landmarkInRobot;
-		const auto b = measurementFromPnP(rm, tm, mount).landmarkInRobot;
+		const VisualMeasurement plus = measurementFromPnP(rp, tp, mount);
+		const VisualMeasurement minus = measurementFromPnP(rm, tm, mount);
+		const auto& a = plus.landmarkInRobot;
+		const auto& b = minus.landmarkInRobot;
 		F(0, k) = (a.x() - b.x()) / (2 * h);
 		F(1, k) = (a.y() - b.y()) / (2 * h);
 		F(2, k) = mrpt::math::wrapToPi(a.phi() - b.phi()) / (2 * h);
+		G.col(k) = (plus.tilt - minus.tilt) / (2 * h);
+	}
+	m.stdSlope = conditioned ? slopeStd(m.tilt, G * poseCov * G.transpose())
+							 : std::numeric_limits<double>::infinity();
+	if (o.recognition_planar) return planarMeasurement(m, refinedInliers, object, pixels, image.camera.K(), mount, o);
+	if (!conditioned)
+	{
+		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
+		m.covariance.setConstant(std::numeric_limits<double>::infinity());
+		return m;
 	}
 	setPredictedCovariance(m, F * poseCov * F.transpose());
 	return m;

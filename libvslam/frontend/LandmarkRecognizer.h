@@ -43,6 +43,12 @@ struct VisualMeasurement
 	int NPoints = 0;  //!< PnP inliers
 	double ProjErrRMS = 0;  //!< px, over the inliers
 	double Slope = 0;  //!< tilt of the robot's z axis against the landmark's, rad
+	/** The robot's z axis in the landmark frame, its x and y: Slope's
+	 * direction (|tilt| = sin Slope). */
+	Eigen::Vector2d tilt = Eigen::Vector2d::Zero();
+	/** Predicted std of Slope from the pose solve (rad, along the tilt's
+	 * direction); infinite where the solve is degenerate. */
+	double stdSlope = 0;
 	int matches = 0;  //!< descriptor matches before RANSAC
 	/** Predicted standard deviations of the measurement: of the position
 	 * (sqrt of the largest eigenvalue of its 2x2 covariance, m) and of the

@@ -9,7 +9,7 @@ using namespace vslam;
 
 IMPLEMENTS_SERIALIZABLE(CObservationVisualLandmark, mrpt::obs::CObservation, vslam)
 
-uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 2; }
+uint8_t CObservationVisualLandmark::serializeGetVersion() const { return 3; }
 
 void CObservationVisualLandmark::serializeTo(
 	mrpt::serialization::CArchive& out) const
@@ -20,7 +20,7 @@ void CObservationVisualLandmark::serializeTo(
 	out << ProjErrRMS << NPoints << Slope << sensorPoseOnRobot;
 	for (int r = 0; r < 3; r++)
 		for (int c = 0; c < 3; c++) out << relPoseCov(r, c);
-	out << Height;
+	out << Height << SlopeStd;
 }
 
 void CObservationVisualLandmark::serializeFrom(
@@ -31,6 +31,7 @@ void CObservationVisualLandmark::serializeFrom(
 		case 0:
 		case 1:
 		case 2:
+		case 3:
 		{
 			double x = 0, y = 0, phi = 0;
 			in >> timestamp;
@@ -44,6 +45,8 @@ void CObservationVisualLandmark::serializeFrom(
 					for (int c = 0; c < 3; c++) in >> relPoseCov(r, c);
 			Height = 0;
 			if (version >= 2) in >> Height;
+			SlopeStd = 0;
+			if (version >= 3) in >> SlopeStd;
 		}
 		break;
 		default:
@@ -59,7 +62,7 @@ void CObservationVisualLandmark::getDescriptionAsText(std::ostream& o) const
 	  << " relPose    : " << relPose << " (dx, dy, dtheta[deg])\n"
 	  << " ProjErrRMS : " << ProjErrRMS << " px\n"
 	  << " NPoints    : " << NPoints << "\n"
-	  << " Slope      : " << Slope << " rad\n"
+	  << " Slope      : " << Slope << " rad (predicted std " << SlopeStd << "; 0: not known)\n"
 	  << " Height     : " << Height << " m\n"
 	  << " sensorPose : " << sensorPoseOnRobot << "\n"
 	  << " relPoseCov : " << relPoseCov.inMatlabFormat() << " (predicted; zero: not known)\n";

@@ -5,7 +5,8 @@
  * (dx, dy, dtheta) in the robot frame (x forward, y left, origin on the floor
  * below the drive-wheel axis), with the paper's three quality statistics
  * and (version 1) the covariance the pose solve predicts for it, (version 2)
- * the robot's height above the landmark frame that the solve implies.
+ * the robot's height above the landmark frame that the solve implies,
+ * (version 3) the std of Slope that the solve predicts.
  */
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/obs/CObservation.h>
@@ -34,6 +35,10 @@ class CObservationVisualLandmark : public mrpt::obs::CObservation
 	uint32_t NPoints{0};
 	/** Robot tilt implied by the 6-DOF solution (rad; ~0 on a level floor). */
 	double Slope{0};
+	/** Std of Slope as the pose solve predicts it from its inliers' geometry
+	 * and pixel error (rad; infinite: degenerate). 0: not known (rawlogs of
+	 * serialization versions 0-2, other front-ends). */
+	double SlopeStd{0};
 	/** Height of the robot frame above the landmark frame implied by the
 	 * 6-DOF solution (m; ~0 on a level floor, whatever the landmark's scale:
 	 * both frames are the robot's on the floor). 0 in rawlogs of

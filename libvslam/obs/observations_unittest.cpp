@@ -29,6 +29,7 @@ TEST(Observations, VisualLandmarkRoundTrip)
 	o.ProjErrRMS = 1.25;
 	o.NPoints = 42;
 	o.Slope = -0.01;
+	o.SlopeStd = 0.004;
 	o.Height = 0.035;
 	o.sensorPoseOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.3, 0, 0.2, 0);
 	o.relPoseCov(0, 0) = 4e-4;
@@ -49,6 +50,7 @@ TEST(Observations, VisualLandmarkRoundTrip)
 	EXPECT_EQ(back->ProjErrRMS, o.ProjErrRMS);
 	EXPECT_EQ(back->NPoints, o.NPoints);
 	EXPECT_EQ(back->Slope, o.Slope);
+	EXPECT_EQ(back->SlopeStd, o.SlopeStd);
 	EXPECT_EQ(back->Height, o.Height);
 	EXPECT_EQ(back->sensorPoseOnRobot, o.sensorPoseOnRobot);
 	EXPECT_EQ(back->relPoseCov, o.relPoseCov);
@@ -69,7 +71,7 @@ CObservationVisualLandmark::Ptr readAsOlderVersion(const CObservationVisualLandm
 	std::vector<uint8_t> bytes(data, data + buf.getTotalBytesCount());
 	const std::string name = "vslam::CObservationVisualLandmark";
 	const size_t versionPos = 1 + name.size();
-	EXPECT_EQ(bytes[versionPos], 2);
+	EXPECT_EQ(bytes[versionPos], 3);
 	bytes[versionPos] = version;
 	bytes.erase(bytes.end() - 1 - static_cast<long>(droppedBytes), bytes.end() - 1);  // keep the end marker
 	mrpt::io::CMemoryStream old;
@@ -81,13 +83,14 @@ CObservationVisualLandmark::Ptr readAsOlderVersion(const CObservationVisualLandm
 
 TEST(Observations, VisualLandmarkOfVersionZeroReadsWithAnUnknownCovariance)
 {
-	// Version 0 is version 1 without the trailing covariance (9 doubles).
+	// Version 0 is version 1 without the trailing covariance (9 doubles),
+	// Height and SlopeStd.
 	CObservationVisualLandmark o;
 	o.landmarkID = 7;
 	o.relPose = mrpt::poses::CPose2D(1, 2, 0.5);
 	o.relPoseCov(0, 0) = 1;
 	o.Height = 0.5;
-	const auto back = readAsOlderVersion(o, 0, 10 * sizeof(double));
+	const auto back = readAsOlderVersion(o, 0, 11 * sizeof(double));
 	ASSERT_TRUE(back);
 	EXPECT_EQ(back->landmarkID, 7);
 	EXPECT_EQ(back->relPose, o.relPose);
@@ -102,11 +105,25 @@ TEST(Observations, VisualLandmarkOfVersionOneReadsWithZeroHeight)
 	o.landmarkID = 8;
 	o.relPoseCov(2, 2) = 3e-4;
 	o.Height = -0.25;
-	const auto back = readAsOlderVersion(o, 1, sizeof(double));
+	const auto back = readAsOlderVersion(o, 1, 2 * sizeof(double));
 	ASSERT_TRUE(back);
 	EXPECT_EQ(back->landmarkID, 8);
 	EXPECT_EQ(back->relPoseCov, o.relPoseCov);
 	EXPECT_EQ(back->Height, 0);
+}
+
+TEST(Observations, VisualLandmarkOfVersionTwoReadsWithAnUnknownSlopeStd)
+{
+	// Version 2 is version 3 without the trailing SlopeStd (one double).
+	CObservationVisualLandmark o;
+	o.landmarkID = 9;
+	o.Height = -0.25;
+	o.SlopeStd = 0.01;
+	const auto back = readAsOlderVersion(o, 2, sizeof(double));
+	ASSERT_TRUE(back);
+	EXPECT_EQ(back->landmarkID, 9);
+	EXPECT_EQ(back->Height, o.Height);
+	EXPECT_EQ(back->SlopeStd, 0);
 }
 
 TEST(Observations, LandmarkCreatedRoundTrip)

@@ -324,7 +324,7 @@ TEST(VisualPipeline, AccuracyCsvCountsBeyondThreeSigmaOfSigmaVisAndOfTheNoiseThe
 		std::vector<double> c;
 		std::stringstream ss(line);
 		for (std::string cell; std::getline(ss, cell, ',');) c.push_back(std::stod(cell));
-		ASSERT_EQ(c.size(), 18u) << line;
+		ASSERT_EQ(c.size(), 19u) << line;
 		const double ex = std::abs(c[2] - c[5]), ey = std::abs(c[3] - c[6]);
 		const double ephi = std::abs(mrpt::math::wrapToPi((c[4] - c[7]) * M_PI / 180)) * 180 / M_PI;
 		const bool vis = ex > 3 * sx || ey > 3 * sx || ephi > 3 * sphiDeg;
@@ -349,4 +349,49 @@ TEST(VisualPipeline, AccuracyCsvCountsBeyondThreeSigmaOfSigmaVisAndOfTheNoiseThe
 	EXPECT_LE(beyondOwn, beyondVis);  // the filter's noise is never below Sigma_vis
 	EXPECT_GT(beyondOwn, 0u);
 	EXPECT_LT(beyondOwn, beyondVis);  // and here the weighting takes some in
+}
+
+TEST(VisualPipeline, AccuracyFollowsThePreFilterOfTheSetOverridesAndChecksTheirKeys)
+{
+	TempDir dir;
+	const std::string rawlog = writeOracleTestRawlog(dir);
+	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
+	const std::string csv = dir.file("accuracy.csv");
+	const std::string fe = quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")) +
+		" --ground-truth " + quoted(truthFile) + " --accuracy-csv " + quoted(csv);
+	// Slope's upper confidence bound: |Slope| + 1 x SlopeStd <= max_Slope.
+	const double maxSlope = 0.003;
+	const auto r = runCommand(fe + " --set vslam_prefilter.max_Slope=" + std::to_string(maxSlope) +
+		" --set vslam_prefilter.Slope_std_factor=1");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::ifstream in(csv);
+	std::string line;
+	std::getline(in, line);
+	ASSERT_NE(line.find(",Slope_std"), std::string::npos) << line;
+	size_t rows = 0, accepted = 0, droppedForTheStdAlone = 0;
+	while (std::getline(in, line))
+	{
+		std::vector<double> c;
+		std::stringstream ss(line);
+		for (std::string cell; std::getline(ss, cell, ',');) c.push_back(std::stod(cell));
+		ASSERT_EQ(c.size(), 19u) << line;
+		const double slope = c[10], slopeStd = c[18];
+		EXPECT_GT(slopeStd, 0) << line;  // the front-end predicts it for every measurement
+		const bool paperRules = c[8] <= 3 && c[9] >= 10;
+		// The file rounds Slope to 1e-5 rad: too close to the bound to tell.
+		if (std::abs(slope + slopeStd - maxSlope) < 2e-5) continue;
+		EXPECT_EQ(c[11] != 0, paperRules && slope + slopeStd <= maxSlope) << line;
+		rows++, accepted += c[11] != 0;
+		droppedForTheStdAlone += paperRules && slope <= maxSlope && slope + slopeStd > maxSlope;
+	}
+	std::printf("%zu measurements: %zu accepted, %zu dropped for their Slope std alone\n", rows, accepted,
+		droppedForTheStdAlone);
+	EXPECT_GT(accepted, 0u);
+	EXPECT_GT(droppedForTheStdAlone, 0u);
+
+	// A misspelled pre-filter key is an error before the run, naming it.
+	const auto bad = runCommand(fe + " --set vslam_prefilter.Slope_std_factr=1");
+	EXPECT_NE(bad.exitCode, 0) << bad.output;
+	EXPECT_NE(bad.output.find("'Slope_std_factr'"), std::string::npos) << bad.output;
+	EXPECT_NE(bad.output.find("did you mean 'Slope_std_factor'"), std::string::npos) << bad.output;
 }
