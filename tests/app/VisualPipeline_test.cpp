@@ -294,6 +294,32 @@ TEST(VisualPipeline, OracleKindsReplaceOrDropOnlyTheMeasurementsBeyondOrWithinTh
 	EXPECT_NE(bad.output.find("--oracle-kind 'some'"), std::string::npos) << bad.output;
 }
 
+namespace
+{
+/** The header and the rows of a `vslam-frontend --accuracy-csv` file, each
+ * row's values with its text (for messages). */
+struct AccuracyCsv
+{
+	std::string header;
+	std::vector<std::pair<std::vector<double>, std::string>> rows;
+};
+
+AccuracyCsv readAccuracyCsv(const std::string& file)
+{
+	AccuracyCsv csv;
+	std::ifstream in(file);
+	std::getline(in, csv.header);
+	for (std::string line; std::getline(in, line);)
+	{
+		std::vector<double> c;
+		std::stringstream ss(line);
+		for (std::string cell; std::getline(ss, cell, ',');) c.push_back(std::stod(cell));
+		csv.rows.emplace_back(std::move(c), line);
+	}
+	return csv;
+}
+}  // namespace
+
 TEST(VisualPipeline, AccuracyCsvCountsBeyondThreeSigmaOfSigmaVisAndOfTheNoiseTheFilterGivesEach)
 {
 	TempDir dir;
@@ -314,16 +340,11 @@ TEST(VisualPipeline, AccuracyCsvCountsBeyondThreeSigmaOfSigmaVisAndOfTheNoiseThe
 		std::string::npos) << r.output;
 
 	// Recompute both flags from the file's own columns.
-	std::ifstream in(csv);
-	std::string line;
-	std::getline(in, line);
-	ASSERT_NE(line.find(",beyond_3_sigma_of_its_noise"), std::string::npos) << line;
+	const AccuracyCsv file = readAccuracyCsv(csv);
+	ASSERT_NE(file.header.find(",beyond_3_sigma_of_its_noise"), std::string::npos) << file.header;
 	size_t rows = 0, beyondVis = 0, beyondOwn = 0;
-	while (std::getline(in, line))
+	for (const auto& [c, line] : file.rows)
 	{
-		std::vector<double> c;
-		std::stringstream ss(line);
-		for (std::string cell; std::getline(ss, cell, ',');) c.push_back(std::stod(cell));
 		ASSERT_EQ(c.size(), 19u) << line;
 		const double ex = std::abs(c[2] - c[5]), ey = std::abs(c[3] - c[6]);
 		const double ephi = std::abs(mrpt::math::wrapToPi((c[4] - c[7]) * M_PI / 180)) * 180 / M_PI;
@@ -364,16 +385,11 @@ TEST(VisualPipeline, AccuracyFollowsThePreFilterOfTheSetOverridesAndChecksTheirK
 	const auto r = runCommand(fe + " --set vslam_prefilter.max_Slope=" + std::to_string(maxSlope) +
 		" --set vslam_prefilter.Slope_std_factor=1");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
-	std::ifstream in(csv);
-	std::string line;
-	std::getline(in, line);
-	ASSERT_NE(line.find(",Slope_std"), std::string::npos) << line;
+	const AccuracyCsv file = readAccuracyCsv(csv);
+	ASSERT_NE(file.header.find(",Slope_std"), std::string::npos) << file.header;
 	size_t rows = 0, accepted = 0, droppedForTheStdAlone = 0;
-	while (std::getline(in, line))
+	for (const auto& [c, line] : file.rows)
 	{
-		std::vector<double> c;
-		std::stringstream ss(line);
-		for (std::string cell; std::getline(ss, cell, ',');) c.push_back(std::stod(cell));
 		ASSERT_EQ(c.size(), 19u) << line;
 		const double slope = c[10], slopeStd = c[18];
 		EXPECT_GT(slopeStd, 0) << line;  // the front-end predicts it for every measurement
