@@ -20,6 +20,8 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 using vslam::testing::readFile;
 using vslam::testing::lineCount;
