@@ -83,6 +83,7 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "measurements:\n"
 	  << "  visual_seen: " << ex.visualSeen << "\n"
 	  << "  visual_accepted_by_prefilter: " << ex.visualAccepted << "\n"
+	  << "  visual_no_kidnap_evidence: " << ex.visualNoKidnapEvidence << "\n"
 	  << "  range_bearing_seen: " << ex.rangeBearingSeen << "\n"
 	  << "  range_bearing_accepted: " << ex.rangeBearingAccepted << "\n"
 	  << "  used_by_filter: " << fs.measurementsUsed << "\n"

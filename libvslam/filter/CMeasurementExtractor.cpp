@@ -111,6 +111,8 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 			m.key = {LandmarkKind::Pose, v->landmarkID};
 			m.z.resize(3);
 			m.z << v->relPose.x(), v->relPose.y(), v->relPose.phi();
+			m.kidnapEvidence = preFilter.isKidnapEvidence(*v);
+			if (!m.kidnapEvidence) m_stats.visualNoKidnapEvidence++;
 			m.R = MatN::Zero(3, 3);
 			m.R.diagonal() << visual.std_dx * visual.std_dx,
 				visual.std_dy * visual.std_dy, visual.std_dphi * visual.std_dphi;
@@ -122,6 +124,7 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 						" has a predicted covariance that is not finite or has a negative variance");
 				m.R += visual.predicted_cov_scale * visual.predicted_cov_scale * P;
 			}
+			if (!m.kidnapEvidence) m.R *= std::pow(preFilter.options.above_evidence_noise_scale, 2);
 			out.measurements.push_back(std::move(m));
 		}
 		else if (auto c = std::dynamic_pointer_cast<CObservationLandmarkCreated>(obs))

@@ -17,6 +17,9 @@ void CPreFilter::TOptions::loadFromConfigFile(
 	max_Slope = readDouble(c, s, "max_Slope", max_Slope, Range::nonNegative());
 	max_Height = readDouble(c, s, "max_Height", max_Height, Range::nonNegative());
 	Slope_std_factor = readDouble(c, s, "Slope_std_factor", Slope_std_factor, Range::nonNegative());
+	evidence_max_Slope = readDouble(c, s, "evidence_max_Slope", evidence_max_Slope, Range::nonNegative());
+	above_evidence_noise_scale = readDouble(c, s, "above_evidence_noise_scale", above_evidence_noise_scale,
+		Range::closed(1, 1000));
 }
 
 void CPreFilter::TOptions::saveToConfigFile(
@@ -32,6 +35,15 @@ void CPreFilter::TOptions::saveToConfigFile(
 		"Reject if |Height| exceeds this [m]; 0: not checked (not in the paper)");
 	c.write(s, "Slope_std_factor", Slope_std_factor, 25, 12,
 		"Reject if |Slope| + this x SlopeStd exceeds max_Slope; 0: |Slope| alone (the paper)");
+	c.write(s, "evidence_max_Slope", evidence_max_Slope, 25, 12,
+		"Above this |Slope| [rad] an accepted measurement is no kidnap evidence; 0: all are");
+	c.write(s, "above_evidence_noise_scale", above_evidence_noise_scale, 25, 12,
+		"Std factor on the noise of measurements above evidence_max_Slope (>= 1)");
+}
+
+double CPreFilter::slopeUpperLimit(double Slope, double SlopeStd) const
+{
+	return std::abs(Slope) + (options.Slope_std_factor > 0 ? options.Slope_std_factor * SlopeStd : 0.0);
 }
 
 CPreFilter::Verdict CPreFilter::check(
@@ -41,8 +53,7 @@ CPreFilter::Verdict CPreFilter::check(
 	if (!(ProjErrRMS <= options.max_ProjErrRMS))
 		return Verdict::RejectedProjErrRMS;
 	if (NPoints < options.min_NPoints) return Verdict::RejectedNPoints;
-	const double slopeMargin = options.Slope_std_factor > 0 ? options.Slope_std_factor * SlopeStd : 0.0;
-	if (!(std::abs(Slope) + slopeMargin <= options.max_Slope)) return Verdict::RejectedSlope;
+	if (!(slopeUpperLimit(Slope, SlopeStd) <= options.max_Slope)) return Verdict::RejectedSlope;
 	if (options.max_Height > 0 && !(std::abs(Height) <= options.max_Height)) return Verdict::RejectedHeight;
 	return Verdict::Accepted;
 }
@@ -50,4 +61,14 @@ CPreFilter::Verdict CPreFilter::check(
 CPreFilter::Verdict CPreFilter::check(const CObservationVisualLandmark& o) const
 {
 	return check(o.ProjErrRMS, o.NPoints, o.Slope, o.Height, o.SlopeStd);
+}
+
+bool CPreFilter::isKidnapEvidence(double Slope, double SlopeStd) const
+{
+	return options.evidence_max_Slope <= 0 || slopeUpperLimit(Slope, SlopeStd) <= options.evidence_max_Slope;
+}
+
+bool CPreFilter::isKidnapEvidence(const CObservationVisualLandmark& o) const
+{
+	return isKidnapEvidence(o.Slope, o.SlopeStd);
 }

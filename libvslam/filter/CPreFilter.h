@@ -12,6 +12,10 @@
  * pose solve predicts (0 where not known: then the paper's rule). A solve
  * that cannot tell the robot's tilt to within the bound is not trusted for
  * the pose either.
+ * evidence_max_Slope (off by default) splits the region in two tiers: a
+ * measurement accepted with |Slope| above it still weighs the particles
+ * but is no evidence for the kidnap test (isKidnapEvidence), with its
+ * noise std scaled by above_evidence_noise_scale.
  */
 #include <mrpt/config/CLoadableOptions.h>
 
@@ -33,6 +37,12 @@ class CPreFilter
 		/** k in |Slope| + k SlopeStd <= max_Slope; 0: the paper's |Slope|
 		 * <= max_Slope. */
 		double Slope_std_factor = 0;
+		/** Kidnap evidence only up to this |Slope| (with Slope_std_factor,
+		 * |Slope| + k SlopeStd), rad; 0: every accepted measurement. */
+		double evidence_max_Slope = 0;
+		/** Std factor on the noise of the measurements above
+		 * evidence_max_Slope (>= 1; 1: the same noise as the others). */
+		double above_evidence_noise_scale = 1;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -58,6 +68,13 @@ class CPreFilter
 	/** SlopeStd: Slope's predicted std, rad (0: not known). */
 	Verdict check(double ProjErrRMS, uint32_t NPoints, double Slope, double Height, double SlopeStd = 0) const;
 	Verdict check(const CObservationVisualLandmark& obs) const;
+	/** For an accepted measurement: may the kidnap test count it? */
+	bool isKidnapEvidence(double Slope, double SlopeStd = 0) const;
+	bool isKidnapEvidence(const CObservationVisualLandmark& obs) const;
+
+   private:
+	/** |Slope|, plus Slope_std_factor x SlopeStd when that is set. */
+	double slopeUpperLimit(double Slope, double SlopeStd) const;
 };
 
 }  // namespace vslam

@@ -77,3 +77,20 @@ TEST(CPreFilter, SlopeStdWidensTheSlopeOnlyWithAFactor)
 	mrpt::config::CConfigFileMemory negative("[p]\nSlope_std_factor = -1\n");
 	EXPECT_THROW(pf.options.loadFromConfigFile(negative, "p"), ConfigError);
 }
+
+TEST(CPreFilter, KidnapEvidenceIsASecondTierWithinTheAcceptedRegion)
+{
+	CPreFilter pf;
+	EXPECT_TRUE(pf.isKidnapEvidence(0.09));  // off: every accepted measurement
+	pf.options.evidence_max_Slope = 0.02;
+	EXPECT_TRUE(pf.isKidnapEvidence(0.02));
+	EXPECT_TRUE(pf.isKidnapEvidence(-0.02));
+	EXPECT_FALSE(pf.isKidnapEvidence(0.021));
+	EXPECT_FALSE(pf.isKidnapEvidence(std::nan("")));
+	EXPECT_EQ(pf.check(1.0, 50, 0.05, 0), V::Accepted);  // still accepted for the particles
+	pf.options.Slope_std_factor = 1;  // the same upper limit as the region's
+	EXPECT_TRUE(pf.isKidnapEvidence(0.01, 0.01));
+	EXPECT_FALSE(pf.isKidnapEvidence(0.01, 0.011));
+	mrpt::config::CConfigFileMemory negative("[p]\nevidence_max_Slope = -0.1\n");
+	EXPECT_THROW(pf.options.loadFromConfigFile(negative, "p"), ConfigError);
+}
