@@ -8,7 +8,8 @@
  * filter can be tested and timed separately.
  *
  *   vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set SECTION.KEY=VALUE ...]
- *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--oracle-rawlog FILE [--oracle-kind K]]]
+ *                  [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--heading-csv FILE]
+ *                   [--oracle-rawlog FILE [--oracle-kind K]]]
  *
  * With --ground-truth (TUM or rbpf-slam path of the robot, e.g. from
  * vslam-simul), it also prints how right the measurements are: errors of
@@ -23,7 +24,11 @@
  * error from the filter's. --oracle-kind splits that share: `all` (the
  * default) replaces every measurement, `outliers` only those beyond 3 sigma
  * of Sigma_vis, `inliers` only those within, and `drop-outliers` keeps the
- * measured values but removes those beyond 3 sigma.
+ * measured values but removes those beyond 3 sigma. With
+ * [vslam_frontend] heading_change, it also prints the heading changes'
+ * errors, their calibration (error over predicted std) and the odometry's
+ * error over the same intervals; --heading-csv writes every heading change
+ * with its truth.
  */
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/app/ToolMain.h>
@@ -32,12 +37,15 @@
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
+#include <libvslam/eval/HeadingChangeAccuracy.h>
 #include <libvslam/eval/MeasurementAccuracy.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
+#include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <libvslam/io/CRawlogReader.h>
+#include <mrpt/obs/CObservationImage.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/obs/registerClasses.h>
 
@@ -113,6 +121,29 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	std::fclose(f);
 }
 
+void printHeadingChangeAccuracy(const std::vector<vslam::HeadingChangeRecord>& records,
+	const std::string& groundTruthFile, const std::string& csvFile)
+{
+	const auto a = vslam::evaluateHeadingChanges(records, vslam::readTrajectory(groundTruthFile));
+	std::printf("vslam-frontend: heading changes: %zu against the truth (%zu without); error median %.4f deg, RMS "
+				"%.4f deg, sum %.2f deg; predicted std median %.4f deg, error / predicted std RMS %.2f, median |.| "
+				"%.2f (0.67 if right), beyond 3 predicted std %zu (%.2f%%); odometry over the same intervals: "
+				"median %.4f deg, RMS %.4f deg, sum %.2f deg\n",
+		a.count, a.withoutTruth, a.medianAbsErrorDeg, a.rmsErrorDeg, a.sumErrorDeg, a.medianPredictedStdDeg,
+		a.rmsNormalizedError, a.medianAbsNormalizedError, a.beyond3Sigma,
+		a.count ? 100.0 * static_cast<double>(a.beyond3Sigma) / static_cast<double>(a.count) : 0.0,
+		a.odometryMedianAbsErrorDeg, a.odometryRmsErrorDeg, a.odometrySumErrorDeg);
+	if (csvFile.empty()) return;
+	FILE* f = std::fopen(csvFile.c_str(), "wt");
+	if (!f) throw vslam::InputError("cannot create '" + csvFile + "'");
+	std::fprintf(f, "t0,t1,dphi_deg,true_dphi_deg,pred_std_deg,odometry_dphi_deg,inliers,matches,rms_px\n");
+	for (const auto& e : a.errors)
+		std::fprintf(f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%d,%d,%.4f\n", e.record.t0, e.record.t1,
+			e.record.dphi * 180 / M_PI, e.trueDphi * 180 / M_PI, e.record.stdDphi * 180 / M_PI,
+			e.record.odometryDphi * 180 / M_PI, e.record.inliers, e.record.matches, e.record.rmsPx);
+	std::fclose(f);
+}
+
 enum class OracleKind
 {
 	All,
@@ -170,7 +201,7 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 
 const char* kUsage =
 	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set SECTION.KEY=VALUE ...]\n"
-	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE]\n"
+	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--heading-csv FILE]\n"
 	"                       [--oracle-rawlog FILE [--oracle-kind all|outliers|inliers|drop-outliers]]]\n"
 	"       vslam-frontend --print-default-config\n";
 }
@@ -182,7 +213,7 @@ int main(int argc, const char** argv)
 	return vslam::runTool("vslam-frontend", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
-		std::string iniFile, groundTruthFile, csvFile, oracleFile;
+		std::string iniFile, groundTruthFile, csvFile, oracleFile, headingCsvFile;
 		OracleKind oracleKind = OracleKind::All;
 		for (int i = 1; i < argc; i++)
 		{
@@ -198,7 +229,7 @@ int main(int argc, const char** argv)
 				return 0;
 			}
 			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv" ||
-					a == "--oracle-rawlog" || a == "--oracle-kind") &&
+					a == "--oracle-rawlog" || a == "--oracle-kind" || a == "--heading-csv") &&
 				i + 1 >= argc)
 				throw std::invalid_argument(a + " needs a value");
 			if (a == "--set")
@@ -209,6 +240,8 @@ int main(int argc, const char** argv)
 				groundTruthFile = argv[++i];
 			else if (a == "--accuracy-csv")
 				csvFile = argv[++i];
+			else if (a == "--heading-csv")
+				headingCsvFile = argv[++i];
 			else if (a == "--oracle-rawlog")
 				oracleFile = argv[++i];
 			else if (a == "--oracle-kind")
@@ -219,8 +252,8 @@ int main(int argc, const char** argv)
 				positional.push_back(a);
 		}
 		if (positional.size() != 2) throw std::invalid_argument("expected IN.rawlog OUT.rawlog");
-		if ((!csvFile.empty() || !oracleFile.empty()) && groundTruthFile.empty())
-			throw std::invalid_argument("--accuracy-csv and --oracle-rawlog need --ground-truth");
+		if ((!csvFile.empty() || !oracleFile.empty() || !headingCsvFile.empty()) && groundTruthFile.empty())
+			throw std::invalid_argument("--accuracy-csv, --heading-csv and --oracle-rawlog need --ground-truth");
 		const TVisualFrontEndOptions options = loadFrontEndOptions(iniFile, overrides);
 		// Sigma_vis and the pre-filter of the INI and the --set overrides, for
 		// the accuracy figures; every vslam key checked before the long run.
@@ -233,18 +266,24 @@ int main(int argc, const char** argv)
 		mrpt::poses::CPose2D odometry;
 		ImagesToMeasurementsResult total;
 		std::vector<LandmarkMeasurementRecord> records;
+		std::vector<HeadingChangeRecord> headingRecords;
 		std::map<int64_t, double> creationTimes;
+		std::map<mrpt::Clock::time_point, double> odometryHeadingAtImage;
 		RawlogStep step;
 		while (reader.next(step))
 		{
 			if (step.action)
 				if (const auto u = odometryIncrement(*step.action)) odometry = odometry + *u;
+			for (const auto& o : *step.sf)
+				if (dynamic_cast<const mrpt::obs::CObservationImage*>(o.get()))
+					odometryHeadingAtImage[o->timestamp] = odometry.phi();
 			const auto r = replaceImagesWithMeasurements(frontEnd, *step.sf, odometry,
 				"rawlog '" + positional[0] + "', entry " + std::to_string(step.entry));
 			total.images += r.images;
 			total.measurements += r.measurements;
 			total.created += r.created;
 			total.pruned += r.pruned;
+			total.headingChanges += r.headingChanges;
 			for (const auto& o : *step.sf)
 			{
 				if (const auto* m = dynamic_cast<const CObservationVisualLandmark*>(o.get()))
@@ -254,6 +293,16 @@ int main(int argc, const char** argv)
 						std::sqrt(m->relPoseCov(2, 2)), m->SlopeStd});
 				else if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
 					creationTimes[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
+				else if (const auto* h = dynamic_cast<const CObservationHeadingChange*>(o.get()))
+				{
+					const auto from = odometryHeadingAtImage.find(h->previousTimestamp);
+					const auto to = odometryHeadingAtImage.find(h->timestamp);
+					if (from != odometryHeadingAtImage.end() && to != odometryHeadingAtImage.end())
+						headingRecords.push_back({mrpt::Clock::toDouble(h->previousTimestamp),
+							mrpt::Clock::toDouble(h->timestamp), h->dphi, h->stdDphi,
+							se2::wrap(to->second - from->second), static_cast<int>(h->NInliers),
+							static_cast<int>(h->NMatches), h->rmsPx});
+				}
 			}
 			auto action = step.action ? step.action : mrpt::obs::CActionCollection::Create();
 			steps.emplace_back(action, step.sf);
@@ -271,7 +320,11 @@ int main(int argc, const char** argv)
 				  << db.indexBytes() << " bytes)\n"
 				  << "vslam-frontend: ms per image: features " << perImage(t.features) << ", search "
 				  << perImage(t.search) << ", pose " << perImage(t.pose) << ", creation "
-				  << perImage(t.creation) << "; total " << seconds << " s -> " << positional[1] << "\n";
+				  << perImage(t.creation) << ", heading change " << perImage(t.heading) << "; total " << seconds
+				  << " s -> " << positional[1] << "\n";
+		if (options.heading_change)
+			std::cout << "vslam-frontend: heading changes: " << frontEnd.headingChangesMeasured() << " measured, "
+					  << frontEnd.headingChangesFailed() << " image pairs without one\n";
 		std::cout << "vslam-frontend: landmark creation: " << frontEnd.creationAttempts() << " attempts, "
 				  << total.created << " built";
 		for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
@@ -280,6 +333,8 @@ int main(int argc, const char** argv)
 				  << " poorly conditioned (recognition_max_std_*), " << frontEnd.ambiguousRecognitions()
 				  << " ambiguous (recognition_ambiguity_min_gap)\n";
 		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, filter, csvFile);
+		if (!groundTruthFile.empty() && options.heading_change)
+			printHeadingChangeAccuracy(headingRecords, groundTruthFile, headingCsvFile);
 		if (!oracleFile.empty())
 		{
 			replaceMeasurementsWithTruth(steps, groundTruthFile, oracleKind, filter.visual);

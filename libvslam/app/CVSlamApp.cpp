@@ -369,6 +369,9 @@ int CVSlamApp::run()
 		frontEndSummary.searchSeconds = t.search;
 		frontEndSummary.poseSeconds = t.pose;
 		frontEndSummary.creationSeconds = t.creation;
+		frontEndSummary.headingSeconds = t.heading;
+		frontEndSummary.headingChanges = frontEnd->headingChangesMeasured();
+		frontEndSummary.headingChangesFailed = frontEnd->headingChangesFailed();
 		const auto& db = frontEnd->database();
 		frontEndSummary.landmarks = db.size();
 		frontEndSummary.bytesPerLandmark = db.size() ? double(db.landmarkBytes()) / db.size() : 0.0;

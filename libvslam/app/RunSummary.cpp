@@ -86,6 +86,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  visual_no_kidnap_evidence: " << ex.visualNoKidnapEvidence << "\n"
 	  << "  range_bearing_seen: " << ex.rangeBearingSeen << "\n"
 	  << "  range_bearing_accepted: " << ex.rangeBearingAccepted << "\n"
+	  << "  heading_changes_seen: " << ex.headingChangesSeen << "\n"
+	  << "  heading_changes_passed: " << ex.headingChangesPassed << "\n"
 	  << "  used_by_filter: " << fs.measurementsUsed << "\n"
 	  << "  rejected:\n"
 	  << "    prefilter_ProjErrRMS: " << ex.rejectedProjErrRMS << "\n"
@@ -110,6 +112,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 	  << "  kidnaps_reverted: " << fs.kidnapsReverted << "\n"
 	  << "  loop_closures: " << fs.loopClosures << "\n"
 	  << "  loop_closure_edges_left_out: " << fs.loopClosureEdgesLeftOut << "\n"
+	  << "  heading_changes: {fused: " << fs.headingChangesFused << ", gated: " << fs.headingChangesGated
+	  << ", without_reference: " << fs.headingChangesWithoutReference << "}\n"
 	  << "timing:\n"
 	  << "  total_seconds: " << totalSeconds << "\n"
 	  << "  step_mean_ms: " << stepMeanMs << "\n"
@@ -130,7 +134,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 		  << "  index_bytes: " << e.indexBytes << "\n"
 		  << "  ms_per_image: {features: " << perImage(e.featuresSeconds) << ", search: "
 		  << perImage(e.searchSeconds) << ", pose: " << perImage(e.poseSeconds)
-		  << ", creation: " << perImage(e.creationSeconds) << "}\n"
+		  << ", creation: " << perImage(e.creationSeconds) << ", heading_change: " << perImage(e.headingSeconds) << "}\n"
+		  << "  heading_changes: {measured: " << e.headingChanges << ", failed: " << e.headingChangesFailed << "}\n"
 		  << "  recognitions_not_reported: {poorly_conditioned: " << e.poorlyConditioned
 		  << ", ambiguous: " << e.ambiguous << "}\n"
 		  << "  creation_attempts: " << e.creationAttempts << "\n"

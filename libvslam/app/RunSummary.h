@@ -33,7 +33,9 @@ struct RunSummary
 	struct FrontEnd
 	{
 		size_t images = 0, measurements = 0, created = 0, pruned = 0, landmarks = 0;
-		double featuresSeconds = 0, searchSeconds = 0, poseSeconds = 0, creationSeconds = 0;
+		double featuresSeconds = 0, searchSeconds = 0, poseSeconds = 0, creationSeconds = 0, headingSeconds = 0;
+		/** Heading changes between images measured, and image pairs without one. */
+		size_t headingChanges = 0, headingChangesFailed = 0;
 		double bytesPerLandmark = 0, indexBytes = 0;
 		size_t creationAttempts = 0;
 		std::map<std::string, size_t> creationRejections;  //!< by reason

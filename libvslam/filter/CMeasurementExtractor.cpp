@@ -1,6 +1,7 @@
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/filter/CMeasurementExtractor.h>
+#include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <mrpt/obs/CObservationBearingRange.h>
@@ -58,6 +59,26 @@ void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
 	c.write(s, "max_range", max_range, 25, 12, "Ignore ranges above this [m] (0: no limit)");
 	c.write(s, "time_jitter_std", time_jitter_std, 25, 12,
 		"Timestamp uncertainty of measurements vs odometry [s]: noise grows with speed and turn rate");
+}
+
+void CMeasurementExtractor::THeadingChangeOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	enabled = readBool(c, s, "enabled", enabled);
+	std_scale = readDouble(c, s, "std_scale", std_scale, Range::positive());
+	min_std = readDegreesAsRadians(c, s, "min_std_deg", min_std, Range::nonNegative());
+	gate_probability = readDouble(c, s, "gate_probability", gate_probability, {0, 1, false, false});
+}
+
+void CMeasurementExtractor::THeadingChangeOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "enabled", enabled, 25, 12,
+		"Fuse the front-end's heading changes between images into the odometry (not in the paper)");
+	c.write(s, "std_scale", std_scale, 25, 12, "Factor on each heading change's predicted std");
+	c.write(s, "min_std_deg", min_std * 180 / M_PI, 25, 12, "Added to each heading change's std (root sum square) [deg]");
+	c.write(s, "gate_probability", gate_probability, 25, 12,
+		"Chi-square gate against the odometry: a heading change outside it is not used");
 }
 
 namespace
@@ -143,6 +164,25 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 				c->landmarkPoseInRobot.phi();
 			lc.relative.R = c->landmarkPoseInRobotCov.asEigen();
 			out.creations.push_back(std::move(lc));
+		}
+		else if (auto h = std::dynamic_pointer_cast<CObservationHeadingChange>(obs))
+		{
+			m_stats.headingChangesSeen++;
+			if (!std::isfinite(h->dphi) || !std::isfinite(h->stdDphi) || h->stdDphi < 0)
+				throw InputError("heading change of '" + h->sensorLabel + "' is not finite or has a negative std");
+			if (!(h->previousTimestamp < h->timestamp))
+				throw InputError("heading change of '" + h->sensorLabel + "' starts at " +
+					std::to_string(mrpt::Clock::toDouble(h->previousTimestamp)) + ", not before its own time " +
+					std::to_string(mrpt::Clock::toDouble(h->timestamp)));
+			if (!headingChange.enabled) continue;
+			const double s = headingChange.std_scale * h->stdDphi;
+			const HeadingChangeMeasurement m{
+				h->previousTimestamp, h->timestamp, h->dphi, s * s + headingChange.min_std * headingChange.min_std};
+			if (!out.headingChange)
+				m_stats.headingChangesPassed++;
+			else if (out.headingChange->variance <= m.variance)
+				continue;
+			out.headingChange = m;
 		}
 		else if (auto br = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(obs))
 		{

@@ -3,8 +3,9 @@
  * Turns the observations of one sensory frame into filter input: visual
  * measurements (through the pre-filter, with noise Sigma_vis), landmark
  * creation events, and range-bearing measurements of point landmarks
- * (MRPT's CObservationBearingRange with landmark IDs). Counts what it
- * rejects and why.
+ * (MRPT's CObservationBearingRange with landmark IDs), and the front-end's
+ * heading changes between images (fused into the odometry by the filter).
+ * Counts what it rejects and why.
  */
 #include <libvslam/filter/CPreFilter.h>
 #include <libvslam/models/LandmarkTypes.h>
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace vslam
@@ -26,12 +28,24 @@ struct LandmarkCreation
 	LandmarkMeasurement relative;
 };
 
+/** The robot's heading change from one image (`from`) to the next (`to`),
+ * with the variance the filter gives it. */
+struct HeadingChangeMeasurement
+{
+	mrpt::Clock::time_point from{}, to{};
+	double dphi = 0;  //!< rad
+	double variance = 0;  //!< rad^2
+};
+
 /** Everything one frame (one image / one sensory frame) says. */
 struct FrameMeasurements
 {
 	mrpt::Clock::time_point timestamp{};
 	std::vector<LandmarkMeasurement> measurements;
 	std::vector<LandmarkCreation> creations;
+	/** Corrects the odometry; not a measurement of the map. */
+	std::optional<HeadingChangeMeasurement> headingChange;
+	/** No landmark measurement or creation (a heading change may be there). */
 	bool empty() const { return measurements.empty() && creations.empty(); }
 };
 
@@ -45,6 +59,9 @@ struct TExtractionStats
 	uint64_t creationsSeen = 0;
 	uint64_t rangeBearingSeen = 0, rangeBearingAccepted = 0;
 	uint64_t rejectedNoLandmarkID = 0, rejectedRangeLimits = 0;
+	/** Heading changes seen, and passed on ([vslam_heading_change] enabled;
+	 * one per frame: with several cameras, the most precise). */
+	uint64_t headingChangesSeen = 0, headingChangesPassed = 0;
 };
 
 class CMeasurementExtractor
@@ -95,8 +112,31 @@ class CMeasurementExtractor
 			const std::string& section) const override;
 	};
 
+	/** [vslam_heading_change]: the front-end's heading change between two
+	 * images (CObservationHeadingChange) fused into the odometry between
+	 * them (COdometryAccumulator.h). Not in the paper. */
+	struct THeadingChangeOptions : public mrpt::config::CLoadableOptions
+	{
+		bool enabled = false;
+		/** The variance given to a heading change: (std_scale x its
+		 * predicted std)^2 + min_std^2. */
+		double std_scale = 1;
+		double min_std = 0.01 * M_PI / 180;  //!< rad (INI: degrees)
+		/** A heading change beyond this chi-square gate of the odometry
+		 * (1 degree of freedom) is not used. */
+		double gate_probability = 0.999;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) const override;
+	};
+
 	TVisualOptions visual;
 	TRangeBearingOptions rangeBearing;
+	THeadingChangeOptions headingChange;
 	CPreFilter preFilter;
 
 	/** Extracts the frame; throws InputError on non-finite values or a

@@ -1,11 +1,13 @@
 #include <gtest/gtest.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/filter/CMeasurementExtractor.h>
+#include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace vslam;
 
@@ -18,6 +20,16 @@ CObservationVisualLandmark::Ptr visual(int64_t id, double projErr, uint32_t n)
 	o->relPose = mrpt::poses::CPose2D(1.0, 0.5, 0.2);
 	o->ProjErrRMS = projErr;
 	o->NPoints = n;
+	return o;
+}
+
+CObservationHeadingChange::Ptr headingChange(double t0, double t1, double dphi, double std)
+{
+	auto o = CObservationHeadingChange::Create();
+	o->previousTimestamp = mrpt::Clock::fromDouble(t0);
+	o->timestamp = mrpt::Clock::fromDouble(t1);
+	o->dphi = dphi;
+	o->stdDphi = std;
 	return o;
 }
 
@@ -202,4 +214,46 @@ TEST(CMeasurementExtractor, ImpossibleRangeBearingValuesAreInputErrors)
 	auto hugeRange = bearingRange();
 	hugeRange->sensedData[0].range = 1e20f;
 	expectError(hugeRange, "beyond any sensor");
+}
+
+TEST(CMeasurementExtractor, HeadingChangesPassOnlyWhenEnabledWithTheirNoise)
+{
+	CMeasurementExtractor ex;
+	mrpt::obs::CSensoryFrame sf;
+	sf.insert(headingChange(10.0, 10.4, 0.05, 1e-3));
+	FrameMeasurements f = ex.extract(sf);
+	EXPECT_FALSE(f.headingChange);  // off by default: the paper's filter
+	EXPECT_TRUE(f.empty());
+	EXPECT_EQ(ex.stats().headingChangesSeen, 1u);
+	EXPECT_EQ(ex.stats().headingChangesPassed, 0u);
+
+	ex.headingChange.enabled = true;
+	ex.headingChange.std_scale = 2;
+	ex.headingChange.min_std = 1e-3;
+	f = ex.extract(sf);
+	ASSERT_TRUE(f.headingChange);
+	EXPECT_TRUE(f.empty());  // no landmark measurement: the filter only corrects its odometry
+	EXPECT_EQ(f.headingChange->from, mrpt::Clock::fromDouble(10.0));
+	EXPECT_EQ(f.headingChange->to, mrpt::Clock::fromDouble(10.4));
+	EXPECT_EQ(f.headingChange->dphi, 0.05);
+	EXPECT_NEAR(f.headingChange->variance, 4e-6 + 1e-6, 1e-18);
+
+	// Two cameras: the more precise one.
+	sf.insert(headingChange(10.1, 10.4, 0.06, 5e-4));
+	f = ex.extract(sf);
+	ASSERT_TRUE(f.headingChange);
+	EXPECT_EQ(f.headingChange->dphi, 0.06);
+	EXPECT_EQ(ex.stats().headingChangesPassed, 2u);
+}
+
+TEST(CMeasurementExtractor, CorruptHeadingChangesAreInputErrors)
+{
+	CMeasurementExtractor ex;
+	for (const auto& h : {headingChange(1, 2, std::nan(""), 1e-3), headingChange(1, 2, 0.1, -1e-3),
+			 headingChange(1, 2, 0.1, std::numeric_limits<double>::infinity()), headingChange(2, 2, 0.1, 1e-3)})
+	{
+		mrpt::obs::CSensoryFrame sf;
+		sf.insert(h);
+		EXPECT_THROW(ex.extract(sf), InputError);
+	}
 }

@@ -3,6 +3,7 @@
 #include <libvslam/filter/CVSlamParticleFilter.h>
 #include <libvslam/filter/OptimalProposal.h>
 #include <libvslam/models/CLandmarkModel.h>
+#include <libvslam/models/ChiSquare.h>
 #include <libvslam/models/MeasurementUpdate.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -26,6 +27,7 @@ CVSlamParticleFilter::CVSlamParticleFilter(const TVSlamFilterOptions& o)
 {
 	m_extractor.visual = o.visual;
 	m_extractor.rangeBearing = o.rangeBearing;
+	m_extractor.headingChange = o.headingChange;
 	m_extractor.preFilter.options = o.prefilter;
 	reset();
 }
@@ -48,7 +50,7 @@ void CVSlamParticleFilter::reset()
 				 pf.initial_std_phi * m_rng.drawGaussian1D_normalized()});
 	}
 	m_index = CLandmarkIndex();
-	m_odometry.reset();
+	m_odometry = COdometryAccumulator();
 	m_lastFrameTime.reset();
 	m_lastKidnap.reset();
 	m_kidnap = CKidnapDetector(m_options.kidnap);
@@ -113,6 +115,9 @@ std::string CVSlamParticleFilter::takeInputError()
 
 void CVSlamParticleFilter::processFrame(const FrameMeasurements& input)
 {
+	// A heading change corrects the odometry the particles are drawn from
+	// next, at this frame or a later one.
+	if (input.headingChange && m_options.headingChange.enabled) fuseHeadingChange(*input.headingChange);
 	if (input.empty()) return;
 	FrameMeasurements frame = input;
 	frame.measurements = withTimeJitter(input);
@@ -135,6 +140,23 @@ void CVSlamParticleFilter::processFrame(const FrameMeasurements& input)
 		if (last) one.creations = frame.creations;
 		updateWithFrame(one);
 		if (!last && ESS() < pf.BETA) performResampling(pf.toMrpt());
+	}
+}
+
+void CVSlamParticleFilter::fuseHeadingChange(const HeadingChangeMeasurement& h)
+{
+	const double gate = chiSquareQuantile(m_options.headingChange.gate_probability, 1);
+	switch (m_odometry.fuseHeadingChange(h.from, h.to, h.dphi, h.variance, gate))
+	{
+		case COdometryAccumulator::HeadingFusion::Fused:
+			m_stats.headingChangesFused++;
+			break;
+		case COdometryAccumulator::HeadingFusion::Gated:
+			m_stats.headingChangesGated++;
+			break;
+		case COdometryAccumulator::HeadingFusion::NoReference:
+			m_stats.headingChangesWithoutReference++;
+			break;
 	}
 }
 

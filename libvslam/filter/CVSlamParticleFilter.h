@@ -63,6 +63,10 @@ struct TFilterStats
 	 * particles, and the measurement edges the gate left out of the latest. */
 	uint64_t loopClosures = 0;
 	uint64_t loopClosureEdgesLeftOut = 0;
+	/** Heading changes between images fused into the odometry, those
+	 * outside the gate, and those without their start image as reference
+	 * (the first image, after a gap, or after an update in between). */
+	uint64_t headingChangesFused = 0, headingChangesGated = 0, headingChangesWithoutReference = 0;
 };
 
 /** What happened in the last processed frame (for logs and plots). */
@@ -109,7 +113,8 @@ class CVSlamParticleFilter
 
 	/** Appends one odometry increment; throws InputError if not finite. */
 	void addOdometryIncrement(const se2::Pose& u);
-	/** Processes the measurements and creation events of one frame. */
+	/** Processes the measurements and creation events of one frame; its
+	 * heading change, if any, first corrects the pending odometry. */
 	void processFrame(const FrameMeasurements& frame);
 	/** Seeds every particle with the same prior map (map continuation,
 	 * benchmarks): the bank is shared, O(1) per particle. */
@@ -179,6 +184,8 @@ class CVSlamParticleFilter
 	std::optional<LastKidnap> m_lastKidnap;
 
 	void updateWithFrame(const FrameMeasurements& frame);
+	/** Fuses a heading change into the pending odometry (COdometryAccumulator). */
+	void fuseHeadingChange(const HeadingChangeMeasurement& h);
 	/** The frame's measurements with the timestamp-jitter noise added. */
 	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
 	void moveParticlesTo(const std::vector<se2::Pose>& poses);

@@ -412,3 +412,77 @@ TEST(CVSlamParticleFilter, MeasurementsThatAreNoKidnapEvidenceDeclareNoKidnap)
 		EXPECT_NEAR(f.meanPose().x, evidence ? elsewhere.x : 0.0, 0.1) << evidence;
 	}
 }
+
+TEST(CVSlamParticleFilter, HeadingChangesCorrectTheOdometryTheParticlesAreDrawnFrom)
+{
+	// Odometry that turns 20% too much; every frame also brings the true
+	// heading change since the last one, and no landmark is in view. With
+	// the heading changes fused ([vslam_heading_change] enabled), the
+	// estimate follows the true heading; without, the odometry's.
+	for (const bool fuse : {false, true})
+	{
+		auto o = manyParticles(1000);
+		o.motion.sigma_R = 0.1;
+		o.headingChange.enabled = fuse;
+		mrpt::random::getRandomGenerator().randomize(5);
+		CVSlamParticleFilter f(o);
+		se2::Pose truth{0, 0, 0};
+		const se2::Pose trueStep{0.05, 0, 0.04}, reported{0.05, 0, 0.048};
+		for (int k = 1; k <= 60; k++)
+		{
+			truth = se2::compose(truth, trueStep);
+			f.addOdometryIncrement(reported);
+			FrameMeasurements fr = frame(k, {});
+			fr.headingChange = HeadingChangeMeasurement{
+				mrpt::Clock::fromDouble(k - 1), mrpt::Clock::fromDouble(k), trueStep.phi, 1e-6};
+			f.processFrame(fr);
+		}
+		const double headingError = std::abs(se2::wrap(f.meanPose().phi - truth.phi));
+		// 60 x 0.008 rad = 27.5 deg of odometry error; fused, the first
+		// frame has no reference yet (0.46 deg).
+		if (fuse)
+		{
+			EXPECT_LT(headingError, 0.01);
+			EXPECT_EQ(f.stats().headingChangesFused, 59u);
+			EXPECT_EQ(f.stats().headingChangesWithoutReference, 1u);
+			EXPECT_EQ(f.stats().headingChangesGated, 0u);
+		}
+		else
+		{
+			EXPECT_NEAR(headingError, 60 * 0.008, 1e-6);
+			EXPECT_EQ(f.stats().headingChangesFused, 0u);
+		}
+	}
+}
+
+TEST(CVSlamParticleFilter, AHeadingChangeAcrossAnUpdateIsFusedIntoWhatRemains)
+{
+	// A frame with a landmark measurement draws the particles and resets the
+	// odometry at that image; the next heading change starts there and is
+	// fused into the increment since. A measurement in a frame without a
+	// heading change (another sensor) between two images leaves the next
+	// heading change without its reference: not fused.
+	auto o = manyParticles(200);
+	o.headingChange.enabled = true;
+	mrpt::random::getRandomGenerator().randomize(6);
+	CVSlamParticleFilter f(o);
+	f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark({2, 0, 0})}});
+	auto withHeading = [](double t, std::vector<LandmarkMeasurement> ms) {
+		FrameMeasurements fr = frame(t, std::move(ms));
+		fr.headingChange = HeadingChangeMeasurement{
+			mrpt::Clock::fromDouble(t - 1), mrpt::Clock::fromDouble(t), 0.0, 1e-6};
+		return fr;
+	};
+	f.addOdometryIncrement({0.01, 0, 0});
+	f.processFrame(withHeading(1, {poseMeasurement(1, {1.99, 0, 0})}));  // no reference yet
+	f.addOdometryIncrement({0.01, 0, 0.02});
+	f.processFrame(withHeading(2, {}));  // fused: the reference at 1 survived the update
+	EXPECT_EQ(f.stats().headingChangesFused, 1u);
+	EXPECT_NEAR(f.pendingOdometry().mean().phi, 0.0, 1e-4);
+	f.addOdometryIncrement({0.01, 0, 0});
+	f.processFrame(frame(2.5, {poseMeasurement(1, {1.97, 0, 0})}));  // another sensor: an update
+	f.addOdometryIncrement({0.01, 0, 0});
+	f.processFrame(withHeading(3, {}));
+	EXPECT_EQ(f.stats().headingChangesFused, 1u);
+	EXPECT_EQ(f.stats().headingChangesWithoutReference, 2u);
+}

@@ -105,6 +105,7 @@ void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 	landmarks.loadFromConfigFile(c, kLandmarks);
 	visual.loadFromConfigFile(c, kVisual);
 	rangeBearing.loadFromConfigFile(c, kRangeBearing);
+	headingChange.loadFromConfigFile(c, kHeadingChange);
 	prefilter.loadFromConfigFile(c, kPreFilter);
 	loopClosure.loadFromConfigFile(c, kLoopClosure);
 }
@@ -119,6 +120,7 @@ void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
 	landmarks.saveToConfigFile(c, kLandmarks);
 	visual.saveToConfigFile(c, kVisual);
 	rangeBearing.saveToConfigFile(c, kRangeBearing);
+	headingChange.saveToConfigFile(c, kHeadingChange);
 	prefilter.saveToConfigFile(c, kPreFilter);
 	loopClosure.saveToConfigFile(c, kLoopClosure);
 }
@@ -133,6 +135,7 @@ void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
 	k.addFromOptions(landmarks, kLandmarks);
 	k.addFromOptions(visual, kVisual);
 	k.addFromOptions(rangeBearing, kRangeBearing);
+	k.addFromOptions(headingChange, kHeadingChange);
 	k.addFromOptions(prefilter, kPreFilter);
 	k.addFromOptions(loopClosure, kLoopClosure);
 }

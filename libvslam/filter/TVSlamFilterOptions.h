@@ -11,6 +11,7 @@
  *   [vslam_landmarks]         initial landmark covariance, re-initialization
  *   [vslam_visual]            visual measurement noise Sigma_vis
  *   [vslam_range_bearing]     range-bearing measurements
+ *   [vslam_heading_change]    heading changes between images, fused into the odometry
  *   [vslam_prefilter]         CPreFilter::TOptions
  *   [vslam_loop_closure]      CLandmarkPoseGraph::TOptions
  */
@@ -103,6 +104,7 @@ struct TVSlamFilterOptions
 	static constexpr const char* kLandmarks = "vslam_landmarks";
 	static constexpr const char* kVisual = "vslam_visual";
 	static constexpr const char* kRangeBearing = "vslam_range_bearing";
+	static constexpr const char* kHeadingChange = "vslam_heading_change";
 	static constexpr const char* kPreFilter = "vslam_prefilter";
 	static constexpr const char* kLoopClosure = CLandmarkPoseGraph::TOptions::kSection;
 
@@ -114,6 +116,7 @@ struct TVSlamFilterOptions
 	TLandmarkOptions landmarks;
 	CMeasurementExtractor::TVisualOptions visual;
 	CMeasurementExtractor::TRangeBearingOptions rangeBearing;
+	CMeasurementExtractor::THeadingChangeOptions headingChange;
 	CPreFilter::TOptions prefilter;
 	CLandmarkPoseGraph::TOptions loopClosure;
 

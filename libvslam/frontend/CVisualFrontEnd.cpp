@@ -79,6 +79,12 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	view.cameraPose = mrpt::poses::CPose3D(odometryPose) + obs.cameraPose;
 	out.features = view.features.size();
 	out.seconds.features = since(t);
+	if (m_options.heading_change)
+	{
+		t = Clock::now();
+		measureHeadingChange(obs, view.features, odometryPose, out);
+		out.seconds.heading = since(t);
+	}
 
 	// Recognition: candidates from the database, then the pose solve.
 	t = Clock::now();
@@ -191,7 +197,45 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	m_total.search += out.seconds.search;
 	m_total.pose += out.seconds.pose;
 	m_total.creation += out.seconds.creation;
+	m_total.heading += out.seconds.heading;
 	return out;
+}
+
+void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& obs, const ImageFeatures& features,
+	const mrpt::poses::CPose2D& odometryPose, Output& out)
+{
+	PreviousImage current{features, odometryPose, obs.timestamp};
+	const auto previous = m_previousImage.find(obs.sensorLabel);
+	if (previous != m_previousImage.end() && previous->second.timestamp < obs.timestamp)
+	{
+		HeadingChangeSettings settings;
+		settings.matchRatio = m_options.match_ratio;
+		settings.minInliers = m_options.heading_change_min_inliers;
+		settings.inlierPx = m_options.heading_change_inlier_px;
+		settings.maxTurn = m_options.heading_change_max_turn;
+		// Backwards (odometry's sign): the chord's direction stays near the heading.
+		const mrpt::poses::CPose2D moved = odometryPose - previous->second.odometryPose;
+		const double chord = moved.x() >= 0 ? moved.norm() : -moved.norm();
+		const auto e = estimateHeadingChange(previous->second.features, features, obs.cameraPose, chord, settings);
+		if (e)
+		{
+			auto h = CObservationHeadingChange::Create();
+			h->timestamp = obs.timestamp;
+			h->sensorLabel = obs.sensorLabel + "_HEADING";
+			h->previousTimestamp = previous->second.timestamp;
+			h->dphi = e->dphi;
+			h->stdDphi = e->stdDphi;
+			h->NMatches = static_cast<uint32_t>(e->matches);
+			h->NInliers = static_cast<uint32_t>(e->inliers);
+			h->rmsPx = e->rmsPx;
+			h->sensorPoseOnRobot = obs.cameraPose;
+			out.headingChanges.push_back(h);
+			m_headingChangesMeasured++;
+		}
+		else
+			m_headingChangesFailed++;
+	}
+	m_previousImage[obs.sensorLabel] = std::move(current);
 }
 
 void CVisualFrontEnd::refineScale(VisualLandmarkModel& lm, VisualMeasurement& m,

@@ -7,12 +7,17 @@
  * recognized the image joins the views for a new landmark, which is built
  * once enough views with enough baseline (from odometry) are at hand and
  * announced as a CObservationLandmarkCreated. The map is bounded by a cap
- * and by pruning landmarks that are expected but repeatedly not seen.
+ * and by pruning landmarks that are expected but repeatedly not seen. With
+ * heading_change, each image is also matched with the same camera's
+ * previous one for the robot's heading change in between
+ * (CObservationHeadingChange, HeadingChange.h).
  */
 #include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/HeadingChange.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <mrpt/obs/CObservationImage.h>
@@ -33,13 +38,15 @@ class CVisualFrontEnd
 
 	struct StageSeconds
 	{
-		double features = 0, search = 0, pose = 0, creation = 0;
-		double total() const { return features + search + pose + creation; }
+		double features = 0, search = 0, pose = 0, creation = 0, heading = 0;
+		double total() const { return features + search + pose + creation + heading; }
 	};
 	struct Output
 	{
 		std::vector<CObservationVisualLandmark::Ptr> measurements;
 		std::vector<CObservationLandmarkCreated::Ptr> created;
+		/** At most one: from this image's camera's previous image. */
+		std::vector<CObservationHeadingChange::Ptr> headingChanges;
 		std::vector<int64_t> pruned;  //!< landmarks removed by map bounding
 		StageSeconds seconds;
 		size_t features = 0;
@@ -66,6 +73,9 @@ class CVisualFrontEnd
 	 * creator's reason with its numbers replaced by "N"). */
 	size_t creationAttempts() const { return m_creationAttempts; }
 	const std::map<std::string, size_t>& creationRejections() const { return m_creationRejections; }
+	/** Heading changes measured, and image pairs where none fit. */
+	size_t headingChangesMeasured() const { return m_headingChangesMeasured; }
+	size_t headingChangesFailed() const { return m_headingChangesFailed; }
 
    private:
 	/** Refines the scale of the landmark just recognized in `m` from this
@@ -73,6 +83,18 @@ class CVisualFrontEnd
 	void refineScale(VisualLandmarkModel& landmark, VisualMeasurement& m, const mrpt::poses::CPose2D& odometryPose,
 		const mrpt::poses::CPose3D& mount);
 	void prune(const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out);
+	/** The heading change from the camera's previous image to this one, if
+	 * one fits; this image becomes the camera's previous one. */
+	void measureHeadingChange(const mrpt::obs::CObservationImage& obs, const ImageFeatures& features,
+		const mrpt::poses::CPose2D& odometryPose, Output& out);
+
+	/** The last image of a camera, for the next heading change. */
+	struct PreviousImage
+	{
+		ImageFeatures features;
+		mrpt::poses::CPose2D odometryPose;
+		mrpt::Clock::time_point timestamp;
+	};
 
 	TVisualFrontEndOptions m_options;
 	FeatureExtractor m_extractor;
@@ -89,5 +111,7 @@ class CVisualFrontEnd
 	size_t m_ambiguous = 0;
 	size_t m_creationAttempts = 0;
 	std::map<std::string, size_t> m_creationRejections;
+	std::map<std::string, PreviousImage> m_previousImage;  //!< by sensor label
+	size_t m_headingChangesMeasured = 0, m_headingChangesFailed = 0;
 };
 }  // namespace vslam

@@ -54,6 +54,8 @@ ImagesToMeasurementsResult vslam::replaceImagesWithMeasurements(
 		r.images++;
 		for (const auto& c : out.created) added.push_back(c);
 		for (const auto& m : out.measurements) added.push_back(m);
+		for (const auto& h : out.headingChanges) added.push_back(h);
+		r.headingChanges += out.headingChanges.size();
 		r.created += out.created.size();
 		r.measurements += out.measurements.size();
 		r.pruned += out.pruned.size();

@@ -2,7 +2,8 @@
 /** \file ImagesToMeasurements.h
  * Puts the front-end into a rawlog stream: the camera images of a sensory
  * frame are replaced by the observations the front-end makes of them
- * (landmark measurements and creations); everything else stays. Used by
+ * (landmark measurements and creations, heading changes); everything else
+ * stays. Used by
  * the vslam app (images in, one run) and by vslam-frontend (image rawlog
  * in, measurement rawlog out).
  */
@@ -16,7 +17,7 @@ namespace vslam
 {
 struct ImagesToMeasurementsResult
 {
-	size_t images = 0, measurements = 0, created = 0, pruned = 0;
+	size_t images = 0, measurements = 0, created = 0, pruned = 0, headingChanges = 0;
 };
 
 /** `where` names the rawlog entry in errors. Throws InputError when an

@@ -85,6 +85,12 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	search_dims = readCount("search_dims", search_dims, 4, 128);
 	descriptor_storage = readWord("descriptor_storage", descriptor_storage, {"float", "uint8", "uint4", "projected"});
 	descriptor_dims = readCount("descriptor_dims", descriptor_dims, 4, 128);
+	heading_change = readBool(c, s, "heading_change", heading_change);
+	heading_change_min_inliers = readCount("heading_change_min_inliers", heading_change_min_inliers, 5, 100000);
+	heading_change_inlier_px =
+		readDouble(c, s, "heading_change_inlier_px", heading_change_inlier_px, Range::positive());
+	heading_change_max_turn = readDegreesAsRadians(
+		c, s, "heading_change_max_turn_deg", heading_change_max_turn, {0, 90, false, true});
 	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
 	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
 	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
@@ -162,6 +168,14 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
 	c.write(s, "descriptor_storage", descriptor_storage, 30, 10, "float | uint8 (128 B) | uint4 (64 B) | projected (descriptor_dims B)");
 	c.write(s, "descriptor_dims", descriptor_dims, 30, 10, "Dimensions kept by the projected storage");
+	c.write(s, "heading_change", heading_change, 30, 10,
+		"Measure the heading change from each image to the camera's previous one (for [vslam_heading_change])");
+	c.write(s, "heading_change_min_inliers", heading_change_min_inliers, 30, 10,
+		"Heading change: feature matches that must fit the motion");
+	c.write(s, "heading_change_inlier_px", heading_change_inlier_px, 30, 10,
+		"Heading change: epipolar distance of an inlier [px]");
+	c.write(s, "heading_change_max_turn_deg", heading_change_max_turn * 180 / M_PI, 30, 10,
+		"Heading change: largest turn between two images looked for [deg]");
 	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
 	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");
 	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");

@@ -7,6 +7,7 @@
 #include <libvslam/config/Overrides.h>
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -135,6 +136,16 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * (descriptor_dims signed bytes). */
 	std::string descriptor_storage = "uint8";
 	int descriptor_dims = 32;
+
+	// Heading change between consecutive images (HeadingChange.h)
+	/** Measure the robot's heading change from each image to the camera's
+	 * previous one and emit it (CObservationHeadingChange) for the filter to
+	 * fuse into the odometry ([vslam_heading_change]). Not in the paper. */
+	bool heading_change = false;
+	int heading_change_min_inliers = 20;  //!< matches that must fit the motion
+	double heading_change_inlier_px = 1.5;  //!< epipolar distance of an inlier, px
+	/** Largest heading change between two images looked for, rad (INI: degrees). */
+	double heading_change_max_turn = 45 * M_PI / 180;
 
 	// Map bounding
 	/** Most landmarks kept (0: no limit); beyond it the least useful go. */

@@ -5,10 +5,24 @@
  * sampled once per accumulated increment, as MRPT's RBPF does: many small
  * increments do not make the cloud diffuse artificially, and a path that
  * goes out and back keeps the uncertainty of the whole trip.
+ *
+ * A heading change measured between two moments (the front-end's visual
+ * heading change between two images, CObservationHeadingChange) is fused
+ * into the accumulated increment: the accumulator keeps the pose at the
+ * last heading reference with its covariance and its cross-covariance with
+ * the current pose, so a heading change from the reference to now is a
+ * Kalman update of their joint Gaussian, h = phi_now - phi_reference. The
+ * corrected increment (and its smaller covariance) is then what the
+ * particles are drawn from. The reference survives reset() when it was set
+ * after the last increment (the filter updates at the image that becomes
+ * the next reference); otherwise part of the interval is already in the
+ * particles and the next heading change cannot be fused.
  */
 #include <libvslam/models/SE2.h>
+#include <mrpt/core/Clock.h>
 
 #include <Eigen/Core>
+#include <optional>
 
 namespace vslam
 {
@@ -18,6 +32,8 @@ class COdometryAccumulator
 	/** Appends increment u (in the frame where it starts) with covariance
 	 * cov (in that same frame). */
 	void add(const se2::Pose& u, const Eigen::Matrix3d& cov);
+	/** Starts a new increment; keeps a heading reference set since the
+	 * last add() (now at the new start, with no uncertainty). */
 	void reset();
 
 	/** The composed increment since the last reset. */
@@ -31,10 +47,36 @@ class COdometryAccumulator
 	/** True if no increment was added since the last reset. */
 	bool empty() const { return m_count == 0; }
 
+	enum class HeadingFusion
+	{
+		Fused,
+		NoReference,  //!< no reference at `from` (first image, a gap, a reset in between)
+		Gated  //!< inconsistent with the odometry beyond the gate: not used
+	};
+	/** Marks the current pose, at time t, as where the next heading change
+	 * starts. */
+	void setHeadingReference(mrpt::Clock::time_point t);
+	/** Fuses the heading change dphi (rad, with `variance`) measured from
+	 * the reference at `from` to now, unless its normalized innovation
+	 * squared exceeds gateChi2 (1 degree of freedom); then the current pose
+	 * becomes the reference at `to` whatever the outcome. */
+	HeadingFusion fuseHeadingChange(mrpt::Clock::time_point from, mrpt::Clock::time_point to, double dphi,
+		double variance, double gateChi2);
+
    private:
 	se2::Pose m_mean{0, 0, 0};
 	Eigen::Matrix3d m_cov = Eigen::Matrix3d::Zero();
 	double m_distance = 0, m_rotation = 0;
 	size_t m_count = 0;
+
+	struct HeadingReference
+	{
+		mrpt::Clock::time_point time;
+		se2::Pose pose;
+		Eigen::Matrix3d cov;  //!< of the reference pose
+		Eigen::Matrix3d cross;  //!< Cov(reference, current)
+		bool atCurrent = true;  //!< nothing added since it was set
+	};
+	std::optional<HeadingReference> m_reference;
 };
 }  // namespace vslam

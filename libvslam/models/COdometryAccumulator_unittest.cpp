@@ -74,3 +74,132 @@ TEST(COdometryAccumulator, CovarianceMatchesMonteCarlo)
 			EXPECT_NEAR(cov(r, c), acc.cov()(r, c), 0.06 * acc.cov().norm())
 				<< r << "," << c;
 }
+
+namespace
+{
+const auto kT0 = mrpt::Clock::fromDouble(100.0), kT1 = mrpt::Clock::fromDouble(100.4),
+		   kT2 = mrpt::Clock::fromDouble(100.8);
+constexpr double kGate = 10.83;  // chi2(1) at 0.999
+}  // namespace
+
+TEST(COdometryAccumulator, AHeadingChangeFromTheStartIsAKalmanUpdateOfTheIncrement)
+{
+	COdometryAccumulator acc;
+	acc.setHeadingReference(kT0);
+	const Eigen::Matrix3d C = Eigen::Vector3d(1e-4, 4e-4, 3e-3).asDiagonal();
+	acc.add({0.3, 0.0, 0.2}, C);
+	acc.add({0.2, 0.0, -0.1}, C);
+	const se2::Pose before = acc.mean();
+	const Eigen::Matrix3d P = acc.cov();
+	const double z = before.phi + 0.04, R = 1e-4;
+	ASSERT_EQ(acc.fuseHeadingChange(kT0, kT1, z, R, kGate), COdometryAccumulator::HeadingFusion::Fused);
+	// The reference is the start: h = phi of the increment, H = [0 0 1].
+	const Eigen::Vector3d K = P.col(2) / (P(2, 2) + R);
+	EXPECT_NEAR(acc.mean().x, before.x + K[0] * 0.04, 1e-12);
+	EXPECT_NEAR(acc.mean().y, before.y + K[1] * 0.04, 1e-12);
+	EXPECT_NEAR(acc.mean().phi, before.phi + K[2] * 0.04, 1e-12);
+	const Eigen::Matrix3d expected = P - K * (P(2, 2) + R) * K.transpose();
+	EXPECT_LT((acc.cov() - expected).norm(), 1e-15);
+	EXPECT_LT(acc.cov()(2, 2), R);  // at least as sure as the measurement
+	// The lateral position moves with the heading: it came from the heading.
+	EXPECT_NE(K[1], 0.0);
+}
+
+TEST(COdometryAccumulator, AReferenceMidwayUsesTheCrossCovarianceOfTheTwoPoses)
+{
+	// A winding first leg (much heading uncertainty at the reference), then
+	// a turn and a straight: the gain of the joint update must equal
+	// Cov(s, h) / (Var(h) + R) of sampled paths, h the heading change since
+	// the reference.
+	CMotionModel::TOptions o;
+	o.sigma_T = 0.05;
+	o.sigma_R = 0.05;
+	o.sigma_R_per_meter = 0.02;
+	const CMotionModel model(o);
+	std::vector<se2::Pose> first, second;
+	for (int i = 0; i < 8; i++) first.push_back({0.1, 0, i % 2 ? 0.3 : -0.3});
+	for (int i = 0; i < 6; i++) second.push_back({0.05, 0, M_PI / 8});
+	for (int i = 0; i < 6; i++) second.push_back({0.1, 0, -0.02});
+	COdometryAccumulator acc;
+	for (const auto& u : first) acc.add(u, model.incrementCovariance(u));
+	acc.setHeadingReference(kT0);
+	for (const auto& u : second) acc.add(u, model.incrementCovariance(u));
+	const se2::Pose before = acc.mean();
+	const Eigen::Matrix3d P = acc.cov();
+	const double R = 5e-3, nu = 1e-3;
+	ASSERT_EQ(acc.fuseHeadingChange(kT0, kT1, before.phi + nu, R, kGate),
+		COdometryAccumulator::HeadingFusion::Fused);
+	const Eigen::Vector3d gain = se2::difference(acc.mean(), before) / nu;
+
+	mrpt::random::CRandomGenerator rng(3);
+	const int N = 40000;
+	std::vector<Eigen::Vector4d> samples;  // x, y, phi, h
+	Eigen::Vector4d mean = Eigen::Vector4d::Zero();
+	for (int k = 0; k < N; k++)
+	{
+		se2::Pose p{0, 0, 0};
+		auto step = [&](const se2::Pose& u) {
+			const Eigen::Matrix3d C = model.incrementCovariance(u);
+			p = se2::compose(p, {u.x + std::sqrt(C(0, 0)) * rng.drawGaussian1D_normalized(),
+									u.y + std::sqrt(C(1, 1)) * rng.drawGaussian1D_normalized(),
+									u.phi + std::sqrt(C(2, 2)) * rng.drawGaussian1D_normalized()});
+		};
+		for (const auto& u : first) step(u);
+		const double phiRef = p.phi;
+		for (const auto& u : second) step(u);
+		samples.emplace_back(p.x, p.y, p.phi, se2::wrap(p.phi - phiRef));
+		mean += samples.back();
+	}
+	mean /= N;
+	Eigen::Vector3d covSh = Eigen::Vector3d::Zero();
+	double varH = 0;
+	for (const auto& s : samples)
+	{
+		covSh += (s.head<3>() - mean.head<3>()) * (s[3] - mean[3]);
+		varH += (s[3] - mean[3]) * (s[3] - mean[3]);
+	}
+	covSh /= N - 1;
+	varH /= N - 1;
+	const Eigen::Vector3d expected = covSh / (varH + R);
+	for (int i = 0; i < 3; i++) EXPECT_NEAR(gain[i], expected[i], 0.05 * expected.norm()) << i;
+	// Without the reference's cross-covariance the gain would be that of
+	// the whole increment's heading, P(:, 2) / (P22 + R): beyond four times
+	// the tolerance above (here 30% off).
+	const Eigen::Vector3d whole = P.col(2) / (P(2, 2) + R);
+	EXPECT_GT((whole - expected).norm(), 0.2 * expected.norm());
+}
+
+TEST(COdometryAccumulator, AHeadingChangeNeedsItsReference)
+{
+	using F = COdometryAccumulator::HeadingFusion;
+	const Eigen::Matrix3d C = Eigen::Matrix3d::Identity() * 1e-3;
+	COdometryAccumulator acc;
+	acc.add({0.1, 0, 0.1}, C);
+	EXPECT_EQ(acc.fuseHeadingChange(kT0, kT1, 0.1, 1e-4, kGate), F::NoReference);  // the first image
+	// ... which made the reference at kT1: the next one fuses.
+	acc.add({0.1, 0, 0.1}, C);
+	EXPECT_EQ(acc.fuseHeadingChange(kT1, kT2, 0.1, 1e-4, kGate), F::Fused);
+	// An update right after the reference keeps it (at the new start) ...
+	acc.reset();
+	acc.add({0.1, 0, 0.05}, C);
+	EXPECT_EQ(acc.fuseHeadingChange(kT2, kT0, 0.05, 1e-4, kGate), F::Fused);
+	// ... one after more odometry does not: part of the interval is gone.
+	acc.add({0.1, 0, 0.05}, C);
+	acc.reset();
+	acc.add({0.1, 0, 0.05}, C);
+	EXPECT_EQ(acc.fuseHeadingChange(kT0, kT1, 0.1, 1e-4, kGate), F::NoReference);
+	// A reference at another time than the measurement's start is no use.
+	acc.add({0.1, 0, 0.05}, C);
+	EXPECT_EQ(acc.fuseHeadingChange(kT0, kT2, 0.05, 1e-4, kGate), F::NoReference);
+}
+
+TEST(COdometryAccumulator, AHeadingChangeTheOdometryCannotExplainIsGated)
+{
+	COdometryAccumulator acc;
+	acc.setHeadingReference(kT0);
+	acc.add({0.1, 0, 0.2}, Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal());  // heading std 0.57 deg
+	const se2::Pose before = acc.mean();
+	EXPECT_EQ(acc.fuseHeadingChange(kT0, kT1, 0.2 + 0.1, 1e-6, kGate), COdometryAccumulator::HeadingFusion::Gated);
+	EXPECT_EQ(acc.mean().phi, before.phi);
+	EXPECT_EQ(acc.cov()(2, 2), 1e-4);
+}

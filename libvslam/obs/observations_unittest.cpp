@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <mrpt/io/CMemoryStream.h>
@@ -17,6 +18,7 @@ TEST(Observations, ClassesAreRegisteredAtLoadTime)
 	EXPECT_NE(
 		mrpt::rtti::findRegisteredClass("vslam::CObservationLandmarkCreated"),
 		nullptr);
+	EXPECT_NE(mrpt::rtti::findRegisteredClass("vslam::CObservationHeadingChange"), nullptr);
 }
 
 TEST(Observations, VisualLandmarkRoundTrip)
@@ -148,6 +150,40 @@ TEST(Observations, LandmarkCreatedRoundTrip)
 	EXPECT_EQ(back->NViews, 3u);
 }
 
+TEST(Observations, HeadingChangeRoundTrip)
+{
+	CObservationHeadingChange o;
+	o.timestamp = mrpt::Clock::fromDouble(1700000000.4);
+	o.previousTimestamp = mrpt::Clock::fromDouble(1700000000.0);
+	o.dphi = -0.0123;
+	o.stdDphi = 3e-4;
+	o.NMatches = 310;
+	o.NInliers = 245;
+	o.rmsPx = 0.42;
+	o.sensorPoseOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.35, -M_PI / 2, 0, -M_PI / 2);
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	buf.Seek(0);
+	auto back = arch.ReadObject<CObservationHeadingChange>();
+	ASSERT_TRUE(back);
+	EXPECT_EQ(back->timestamp, o.timestamp);
+	EXPECT_EQ(back->previousTimestamp, o.previousTimestamp);
+	EXPECT_EQ(back->sensorLabel, "CAMERA_HEADING");
+	EXPECT_EQ(back->dphi, o.dphi);
+	EXPECT_EQ(back->stdDphi, o.stdDphi);
+	EXPECT_EQ(back->NMatches, 310u);
+	EXPECT_EQ(back->NInliers, 245u);
+	EXPECT_EQ(back->rmsPx, o.rmsPx);
+	EXPECT_EQ(back->sensorPoseOnRobot, o.sensorPoseOnRobot);
+	EXPECT_EQ(back->exportTxtDataRow(), o.exportTxtDataRow());
+	EXPECT_EQ(o.exportTxtHeader(), "since dphi stdDphi NMatches NInliers rmsPx");
+	std::ostringstream text;
+	o.getDescriptionAsText(text);
+	for (const char* f : {"dphi", "NMatches", "NInliers", "rmsPx", "since"})
+		EXPECT_NE(text.str().find(f), std::string::npos) << f;
+}
+
 TEST(Observations, DescriptionAndExportMentionEveryField)
 {
 	CObservationVisualLandmark o;
@@ -185,16 +221,19 @@ TEST(Observations, EachKindHasItsOwnDefaultSensorLabel)
 	// first object's header: the two kinds must not share a label.
 	EXPECT_EQ(CObservationVisualLandmark().sensorLabel, "CAMERA");
 	EXPECT_NE(CObservationLandmarkCreated().sensorLabel, CObservationVisualLandmark().sensorLabel);
+	EXPECT_NE(CObservationHeadingChange().sensorLabel, CObservationVisualLandmark().sensorLabel);
+	EXPECT_NE(CObservationHeadingChange().sensorLabel, CObservationLandmarkCreated().sensorLabel);
 }
 
 // A corrupt label length must not become a 4 GiB allocation (MRPT's own
-// string reader would try): both classes refuse it with an exception.
+// string reader would try): every class refuses it with an exception.
 TEST(Observations, CorruptSensorLabelLengthThrowsInsteadOfAllocating)
 {
 	CObservationVisualLandmark visual;
 	CObservationLandmarkCreated created;
-	for (const mrpt::serialization::CSerializable* o :
-		 std::initializer_list<const mrpt::serialization::CSerializable*>{&visual, &created})
+	CObservationHeadingChange heading;
+	for (const mrpt::obs::CObservation* o :
+		 std::initializer_list<const mrpt::obs::CObservation*>{&visual, &created, &heading})
 	{
 		mrpt::io::CMemoryStream buf;
 		auto arch = mrpt::serialization::archiveFrom(buf);
@@ -206,7 +245,7 @@ TEST(Observations, CorruptSensorLabelLengthThrowsInsteadOfAllocating)
 		ASSERT_LT(lengthPos + 4, buf.getTotalBytesCount());
 		uint32_t length = 0;
 		std::memcpy(&length, data + lengthPos, 4);
-		EXPECT_EQ(length, std::string(o == &visual ? visual.sensorLabel : created.sensorLabel).size());
+		EXPECT_EQ(length, o->sensorLabel.size());
 		const uint32_t corrupt = 0xF0000000u;
 		std::memcpy(data + lengthPos, &corrupt, 4);
 		buf.Seek(0);

@@ -1,6 +1,7 @@
 /** Registers vslam's observation classes with MRPT's class registry when the
  * shared library is loaded, so stock MRPT tools can read rawlogs containing
  * them: LD_PRELOAD=libvslam_obs.so rawlog-edit --info -i file.rawlog */
+#include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
 #include <libvslam/obs/registerClasses.h>
@@ -16,4 +17,5 @@ void vslam::registerObservationClasses()
 	using mrpt::rtti::registerClass;
 	registerClass(CLASS_ID(vslam::CObservationVisualLandmark));
 	registerClass(CLASS_ID(vslam::CObservationLandmarkCreated));
+	registerClass(CLASS_ID(vslam::CObservationHeadingChange));
 }

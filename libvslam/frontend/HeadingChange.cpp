@@ -1,0 +1,230 @@
+#include <libvslam/frontend/DescriptorMatching.h>
+#include <libvslam/frontend/HeadingChange.h>
+#include <libvslam/models/SE2.h>
+
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace vslam;
+
+namespace
+{
+Eigen::Matrix3d skew(const Eigen::Vector3d& v)
+{
+	Eigen::Matrix3d S;
+	S << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+	return S;
+}
+
+/** A camera closer than this to not moving at all is treated as rotating
+ * only (m). */
+constexpr double kStillCamera = 1e-9;
+
+/** Bin width of the bearing-change votes, and the fine search's step. */
+constexpr double kVoteBin = 0.5 * M_PI / 180;
+constexpr double kSearchStep = 0.05 * M_PI / 180;
+
+/** Slip allowed in the chord's direction beyond the two headings, rad. */
+constexpr double kChordSlip = 1.0 * M_PI / 180;
+
+/** Normalized image point of a camera-frame direction, and its derivative
+ * for a derivative dp of the direction. */
+Eigen::Vector2d normalized(const Eigen::Vector3d& p) { return {p.x() / p.z(), p.y() / p.z()}; }
+Eigen::Vector2d normalizedDerivative(const Eigen::Vector3d& p, const Eigen::Vector3d& dp)
+{
+	return {(dp.x() * p.z() - p.x() * dp.z()) / (p.z() * p.z()), (dp.y() * p.z() - p.y() * dp.z()) / (p.z() * p.z())};
+}
+}  // namespace
+
+PlanarEpipolarModel::PlanarEpipolarModel(const mrpt::poses::CPose3D& mount, double chord)
+	: m_Rm(mount.getRotationMatrix().asEigen()), m_tm(mount.x(), mount.y(), mount.z()), m_chord(chord)
+{
+}
+
+double PlanarEpipolarModel::chordDirectionStd(double theta)
+{
+	return std::sqrt(theta * theta / 4 + kChordSlip * kChordSlip);
+}
+
+void PlanarEpipolarModel::cameraMotion(double theta, double alpha, Eigen::Matrix3d& R, Eigen::Vector3d& t,
+	Eigen::Matrix3d* dR_dtheta, Eigen::Vector3d* dt_dtheta, Eigen::Vector3d* dt_dalpha) const
+{
+	const double c = std::cos(theta), s = std::sin(theta);
+	Eigen::Matrix3d Rz;
+	Rz << c, -s, 0, s, c, 0, 0, 0, 1;
+	const Eigen::Vector3d tu(m_chord * std::cos(alpha), m_chord * std::sin(alpha), 0);
+	// Robot motion U: X_robot1 = Rz X_robot2 + tu; the camera: X_robot = Rm X_cam + tm.
+	R = m_Rm.transpose() * Rz * m_Rm;
+	t = m_Rm.transpose() * (Rz * m_tm + tu - m_tm);
+	if (dR_dtheta || dt_dtheta)
+	{
+		Eigen::Matrix3d dRz;
+		dRz << -s, -c, 0, c, -s, 0, 0, 0, 0;
+		if (dR_dtheta) *dR_dtheta = m_Rm.transpose() * dRz * m_Rm;
+		if (dt_dtheta) *dt_dtheta = m_Rm.transpose() * (dRz * m_tm);
+	}
+	if (dt_dalpha)
+		*dt_dalpha = m_Rm.transpose() * Eigen::Vector3d(-m_chord * std::sin(alpha), m_chord * std::cos(alpha), 0);
+}
+
+double PlanarEpipolarModel::residual(const Eigen::Vector3d& r1, const Eigen::Vector3d& r2, double theta,
+	double alpha, double* dTheta, double* dAlpha) const
+{
+	Eigen::Matrix3d R, dR;
+	Eigen::Vector3d t, dt, dta;
+	cameraMotion(theta, alpha, R, t, &dR, &dt, &dta);
+	if (t.norm() < kStillCamera && dt.norm() < kStillCamera && dta.norm() < kStillCamera)
+	{
+		// A camera that only rotates: r1 against R r2 across the direction in
+		// which the rotation moves the point (fixed, from theta = 0).
+		Eigen::Matrix3d R0, dR0;
+		Eigen::Vector3d t0;
+		cameraMotion(0, 0, R0, t0, &dR0);
+		const Eigen::Vector2d g0 = normalizedDerivative(R0 * r2, dR0 * r2);
+		const Eigen::Vector2d across = g0.norm() > 0 ? Eigen::Vector2d(g0.normalized()) : Eigen::Vector2d(1, 0);
+		const Eigen::Vector3d p = R * r2;
+		if (dTheta) *dTheta = -normalizedDerivative(p, dR * r2).dot(across);
+		if (dAlpha) *dAlpha = 0;
+		return (normalized(r1) - normalized(p)).dot(across);
+	}
+	// x1^T E x2 = 0 with E = [t]x R (X1 = R X2 + t); Sampson's first-order
+	// distance to the epipolar lines in both images.
+	const Eigen::Matrix3d E = skew(t) * R;
+	const Eigen::Vector3d u = E * r2, v = E.transpose() * r1;
+	const double a = r1.dot(u);
+	const double b = u.x() * u.x() + u.y() * u.y() + v.x() * v.x() + v.y() * v.y();
+	if (!(b > 0))
+	{
+		if (dTheta) *dTheta = 0;
+		if (dAlpha) *dAlpha = 0;
+		return 0;
+	}
+	const double sqrtB = std::sqrt(b);
+	const auto derivative = [&](const Eigen::Matrix3d& dE) {
+		const Eigen::Vector3d du = dE * r2, dv = dE.transpose() * r1;
+		const double da = r1.dot(du);
+		const double db = 2 * (u.x() * du.x() + u.y() * du.y() + v.x() * dv.x() + v.y() * dv.y());
+		return da / sqrtB - 0.5 * a * db / (b * sqrtB);
+	};
+	if (dTheta) *dTheta = derivative(skew(dt) * R + skew(t) * dR);
+	if (dAlpha) *dAlpha = derivative(skew(dta) * R);
+	return a / sqrtB;
+}
+
+std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFeatures& first,
+	const ImageFeatures& second, const mrpt::poses::CPose3D& mount, double chord, const HeadingChangeSettings& s)
+{
+	const size_t least = static_cast<size_t>(std::max(2, s.minInliers));
+	if (first.size() < least || second.size() < least) return std::nullopt;
+	const auto matches = matchDescriptors(second.descriptors, first.descriptors, s.matchRatio);
+	if (matches.size() < least) return std::nullopt;
+
+	const PlanarEpipolarModel model(mount, chord);
+	const Eigen::Matrix3d Rm = mount.getRotationMatrix().asEigen();
+	const double focal = std::sqrt(second.camera.fx * second.camera.fy);
+	std::vector<Eigen::Vector3d> rays1, rays2;
+	std::vector<double> votes;
+	rays1.reserve(matches.size());
+	rays2.reserve(matches.size());
+	votes.reserve(matches.size());
+	for (const auto& [inSecond, inFirst] : matches)
+	{
+		const cv::Point3d a = first.camera.ray(first.pixels[static_cast<size_t>(inFirst)]);
+		const cv::Point3d b = second.camera.ray(second.pixels[static_cast<size_t>(inSecond)]);
+		rays1.emplace_back(a.x, a.y, a.z);
+		rays2.emplace_back(b.x, b.y, b.z);
+		// A point at bearing phi from the first pose lies at phi - theta from
+		// the second (exactly so for distant points).
+		const Eigen::Vector3d v1 = Rm * rays1.back(), v2 = Rm * rays2.back();
+		votes.push_back(se2::wrap(std::atan2(v1.y(), v1.x()) - std::atan2(v2.y(), v2.x())));
+	}
+
+	// The densest window of three vote bins gives the start.
+	const int half = static_cast<int>(std::ceil(s.maxTurn / kVoteBin));
+	std::vector<int> bins(static_cast<size_t>(2 * half + 1), 0);
+	for (const double v : votes)
+		if (std::abs(v) <= s.maxTurn) bins[static_cast<size_t>(std::lround(v / kVoteBin) + half)]++;
+	int best = 0, bestCount = -1;
+	for (int i = 0; i < static_cast<int>(bins.size()); i++)
+	{
+		int count = bins[static_cast<size_t>(i)];
+		if (i > 0) count += bins[static_cast<size_t>(i - 1)];
+		if (i + 1 < static_cast<int>(bins.size())) count += bins[static_cast<size_t>(i + 1)];
+		if (count > bestCount) bestCount = count, best = i;
+	}
+	if (bestCount < static_cast<int>(least)) return std::nullopt;
+	std::vector<double> window;
+	for (const double v : votes)
+		if (std::abs(v - (best - half) * kVoteBin) <= 1.5 * kVoteBin) window.push_back(v);
+	std::nth_element(window.begin(), window.begin() + static_cast<long>(window.size() / 2), window.end());
+	double theta = window[window.size() / 2];
+
+	// A fine search of the truncated squared distance around it, on the arc:
+	// the votes ignore parallax, the model does not.
+	const double tau = s.inlierPx / focal;
+	auto truncatedCost = [&](double th) {
+		double c = 0;
+		for (size_t i = 0; i < rays1.size(); i++)
+		{
+			const double r = model.residual(rays1[i], rays2[i], th, th / 2);
+			c += std::min(r * r, tau * tau);
+		}
+		return c;
+	};
+	double bestTheta = theta, bestCost = truncatedCost(theta);
+	for (double d = -3 * kVoteBin; d <= 3 * kVoteBin + 1e-12; d += kSearchStep)
+	{
+		const double c = truncatedCost(theta + d);
+		if (c < bestCost) bestCost = c, bestTheta = theta + d;
+	}
+	theta = bestTheta;
+
+	// Gauss-Newton for theta on the arc (alpha = theta/2), over the inliers,
+	// chosen again after each step.
+	std::vector<char> inlier(rays1.size(), 0), previous;
+	double sumJJ = 0, sumJJa = 0, sumRR = 0;
+	int n = 0;
+	for (int iteration = 0; iteration < 30; iteration++)
+	{
+		double sumRJ = 0;
+		sumJJ = sumJJa = sumRR = 0;
+		n = 0;
+		for (size_t i = 0; i < rays1.size(); i++)
+		{
+			double dTheta = 0, dAlpha = 0;
+			const double r = model.residual(rays1[i], rays2[i], theta, theta / 2, &dTheta, &dAlpha);
+			inlier[i] = std::abs(r) <= tau;
+			if (!inlier[i]) continue;
+			const double J = dTheta + dAlpha / 2;  // along the arc
+			sumRJ += r * J;
+			sumJJ += J * J;
+			sumJJa += J * dAlpha;
+			sumRR += r * r;
+			n++;
+		}
+		if (n < static_cast<int>(least) || !(sumJJ > 0)) return std::nullopt;
+		const double step = -sumRJ / sumJJ;
+		const bool settled = inlier == previous;
+		previous = inlier;
+		if (settled && std::abs(step) < 1e-10) break;
+		theta += step;
+	}
+	if (!(std::abs(theta) <= s.maxTurn)) return std::nullopt;
+	// The fit's own variance, plus the chord direction's: a chord off the
+	// arc by delta moves the fitted theta by -sum(J dr/dalpha) / sum(J^2)
+	// delta, with delta's prior spread (a "consider" parameter: the images
+	// measure the direction of a few centimetres of travel too poorly to
+	// trust their own estimate of it).
+	const double variance = sumRR / (n - 1);  // normalized image units^2
+	const double sensitivity = sumJJa / sumJJ;
+	const double sigmaAlpha = PlanarEpipolarModel::chordDirectionStd(theta);
+	HeadingChangeEstimate e;
+	e.dphi = se2::wrap(theta);
+	e.inliers = n;
+	e.matches = static_cast<int>(matches.size());
+	e.rmsPx = std::sqrt(sumRR / n) * focal;
+	e.stdDphi = std::sqrt(variance / sumJJ + sensitivity * sensitivity * sigmaAlpha * sigmaAlpha);
+	return e;
+}
