@@ -69,30 +69,41 @@ void PlanarEpipolarModel::cameraMotion(double theta, double alpha, Eigen::Matrix
 		*dt_dalpha = m_Rm.transpose() * Eigen::Vector3d(-m_chord * std::sin(alpha), m_chord * std::cos(alpha), 0);
 }
 
-double PlanarEpipolarModel::residual(const Eigen::Vector3d& r1, const Eigen::Vector3d& r2, double theta,
-	double alpha, double* dTheta, double* dAlpha) const
+EpipolarMotion PlanarEpipolarModel::motion(double theta, double alpha) const
 {
-	Eigen::Matrix3d R, dR;
+	EpipolarMotion m;
 	Eigen::Vector3d t, dt, dta;
-	cameraMotion(theta, alpha, R, t, &dR, &dt, &dta);
-	if (t.norm() < kStillCamera && dt.norm() < kStillCamera && dta.norm() < kStillCamera)
+	cameraMotion(theta, alpha, m.R, t, &m.dR_dtheta, &dt, &dta);
+	m.still = t.norm() < kStillCamera && dt.norm() < kStillCamera && dta.norm() < kStillCamera;
+	if (m.still)
+	{
+		Eigen::Vector3d t0;
+		cameraMotion(0, 0, m.R0, t0, &m.dR0_dtheta);
+		return m;
+	}
+	m.E = skew(t) * m.R;
+	m.dE_dtheta = skew(dt) * m.R + skew(t) * m.dR_dtheta;
+	m.dE_dalpha = skew(dta) * m.R;
+	return m;
+}
+
+double PlanarEpipolarModel::residual(
+	const EpipolarMotion& m, const Eigen::Vector3d& r1, const Eigen::Vector3d& r2, double* dTheta, double* dAlpha)
+{
+	if (m.still)
 	{
 		// A camera that only rotates: r1 against R r2 across the direction in
 		// which the rotation moves the point (fixed, from theta = 0).
-		Eigen::Matrix3d R0, dR0;
-		Eigen::Vector3d t0;
-		cameraMotion(0, 0, R0, t0, &dR0);
-		const Eigen::Vector2d g0 = normalizedDerivative(R0 * r2, dR0 * r2);
+		const Eigen::Vector2d g0 = normalizedDerivative(m.R0 * r2, m.dR0_dtheta * r2);
 		const Eigen::Vector2d across = g0.norm() > 0 ? Eigen::Vector2d(g0.normalized()) : Eigen::Vector2d(1, 0);
-		const Eigen::Vector3d p = R * r2;
-		if (dTheta) *dTheta = -normalizedDerivative(p, dR * r2).dot(across);
+		const Eigen::Vector3d p = m.R * r2;
+		if (dTheta) *dTheta = -normalizedDerivative(p, m.dR_dtheta * r2).dot(across);
 		if (dAlpha) *dAlpha = 0;
 		return (normalized(r1) - normalized(p)).dot(across);
 	}
-	// x1^T E x2 = 0 with E = [t]x R (X1 = R X2 + t); Sampson's first-order
-	// distance to the epipolar lines in both images.
-	const Eigen::Matrix3d E = skew(t) * R;
-	const Eigen::Vector3d u = E * r2, v = E.transpose() * r1;
+	// x1^T E x2 = 0; Sampson's first-order distance to the epipolar lines in
+	// both images.
+	const Eigen::Vector3d u = m.E * r2, v = m.E.transpose() * r1;
 	const double a = r1.dot(u);
 	const double b = u.x() * u.x() + u.y() * u.y() + v.x() * v.x() + v.y() * v.y();
 	if (!(b > 0))
@@ -108,8 +119,8 @@ double PlanarEpipolarModel::residual(const Eigen::Vector3d& r1, const Eigen::Vec
 		const double db = 2 * (u.x() * du.x() + u.y() * du.y() + v.x() * dv.x() + v.y() * dv.y());
 		return da / sqrtB - 0.5 * a * db / (b * sqrtB);
 	};
-	if (dTheta) *dTheta = derivative(skew(dt) * R + skew(t) * dR);
-	if (dAlpha) *dAlpha = derivative(skew(dta) * R);
+	if (dTheta) *dTheta = derivative(m.dE_dtheta);
+	if (dAlpha) *dAlpha = derivative(m.dE_dalpha);
 	return a / sqrtB;
 }
 
@@ -165,10 +176,11 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 	// the votes ignore parallax, the model does not.
 	const double tau = s.inlierPx / focal;
 	auto truncatedCost = [&](double th) {
+		const EpipolarMotion m = model.motion(th, th / 2);
 		double c = 0;
 		for (size_t i = 0; i < rays1.size(); i++)
 		{
-			const double r = model.residual(rays1[i], rays2[i], th, th / 2);
+			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i]);
 			c += std::min(r * r, tau * tau);
 		}
 		return c;
@@ -191,10 +203,11 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 		double sumRJ = 0;
 		sumJJ = sumJJa = sumRR = 0;
 		n = 0;
+		const EpipolarMotion m = model.motion(theta, theta / 2);
 		for (size_t i = 0; i < rays1.size(); i++)
 		{
 			double dTheta = 0, dAlpha = 0;
-			const double r = model.residual(rays1[i], rays2[i], theta, theta / 2, &dTheta, &dAlpha);
+			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i], &dTheta, &dAlpha);
 			inlier[i] = std::abs(r) <= tau;
 			if (!inlier[i]) continue;
 			const double J = dTheta + dAlpha / 2;  // along the arc

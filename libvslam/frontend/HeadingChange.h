@@ -62,6 +62,18 @@ struct HeadingChangeEstimate
 	double rmsPx = 0;  //!< RMS Sampson distance of the inliers, pixels
 };
 
+/** The camera's motion between the two images for one (theta, alpha),
+ * built once to score many matches (PlanarEpipolarModel::motion). */
+struct EpipolarMotion
+{
+	/** The essential matrix E = [t]x R (X1 = R X2 + t) and its derivatives. */
+	Eigen::Matrix3d E, dE_dtheta, dE_dalpha;
+	/** A camera that does not move (on the robot's axis, turning in place):
+	 * the rotation, its derivative, and those at theta = 0. */
+	bool still = false;
+	Eigen::Matrix3d R, dR_dtheta, R0, dR0_dtheta;
+};
+
 /** The epipolar geometry of one robot motion: the residual of a match as
  * a function of the heading change theta and the chord's direction alpha.
  * Rays are unit-depth rays of undistorted pixels in each image's camera
@@ -80,13 +92,22 @@ class PlanarEpipolarModel
 		Eigen::Matrix3d* dR_dtheta = nullptr, Eigen::Vector3d* dt_dtheta = nullptr,
 		Eigen::Vector3d* dt_dalpha = nullptr) const;
 
-	/** Signed Sampson distance of rays r1 (first image) and r2 (second), in
-	 * normalized image units (times the focal length: pixels), and its
-	 * derivatives by theta and alpha. Where the camera does not move, the
-	 * distance of r1 from R r2 across the direction in which the rotation
-	 * moves the point. */
+	/** The camera's motion for (theta, alpha). */
+	EpipolarMotion motion(double theta, double alpha) const;
+
+	/** Signed Sampson distance of rays r1 (first image) and r2 (second)
+	 * under `m`, in normalized image units (times the focal length:
+	 * pixels), and its derivatives by theta and alpha. Where the camera does
+	 * not move, the distance of r1 from R r2 across the direction in which
+	 * the rotation moves the point. */
+	static double residual(const EpipolarMotion& m, const Eigen::Vector3d& r1, const Eigen::Vector3d& r2,
+		double* dTheta = nullptr, double* dAlpha = nullptr);
+	/** The same for (theta, alpha). */
 	double residual(const Eigen::Vector3d& r1, const Eigen::Vector3d& r2, double theta, double alpha,
-		double* dTheta = nullptr, double* dAlpha = nullptr) const;
+		double* dTheta = nullptr, double* dAlpha = nullptr) const
+	{
+		return residual(motion(theta, alpha), r1, r2, dTheta, dAlpha);
+	}
 
 	/** The prior std of alpha around theta/2 for heading change theta. */
 	static double chordDirectionStd(double theta);
