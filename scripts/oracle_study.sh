@@ -11,7 +11,8 @@
 # estimate, the SE(2)-aligned ATE RMSE of the most-likely path and the ATE
 # RMSE of the loop-closure graph's path at the end (pose_graph_path.tum; 0
 # when the run has none), mean over the filter seeds, for each rawlog and
-# over all.
+# over all. The front-end's log (accuracy against the truth) and, with
+# heading changes on, their CSV (--heading-csv) stay in OUT_DIR.
 #
 #   [ORACLE_KIND=K] scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
 #
@@ -77,7 +78,8 @@ for rawlog in "${DATA[@]}"; do
   [[ "$KIND" == all ]] || oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle_$KIND.rawlog"
   if [[ ! -s "$oracle" ]]; then
     "$BIN/vslam-frontend" "$rawlog" "$measured" --config "$INI" "${FRONTEND_SETS[@]}" \
-      --ground-truth "$gt" --oracle-rawlog "$oracle.part" --oracle-kind "$KIND" > "$OUT/${SCENARIO}_${name}_$KEY.log"
+      --ground-truth "$gt" --oracle-rawlog "$oracle.part" --oracle-kind "$KIND" \
+      --heading-csv "$OUT/${SCENARIO}_${name}_$KEY.heading.csv" > "$OUT/${SCENARIO}_${name}_$KEY.log"
     mv "$oracle.part" "$oracle"
   fi
   m="$(filter_runs "$measured" "$gt")" || exit 1

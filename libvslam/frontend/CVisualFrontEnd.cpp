@@ -213,6 +213,7 @@ void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& o
 		settings.minInliers = m_options.heading_change_min_inliers;
 		settings.inlierPx = m_options.heading_change_inlier_px;
 		settings.maxTurn = m_options.heading_change_max_turn;
+		settings.minDepth = m_options.heading_change_min_depth;
 		// Backwards (odometry's sign): the chord's direction stays near the heading.
 		const mrpt::poses::CPose2D moved = odometryPose - previous->second.odometryPose;
 		const double chord = moved.x() >= 0 ? moved.norm() : -moved.norm();

@@ -81,9 +81,18 @@ EpipolarMotion PlanarEpipolarModel::motion(double theta, double alpha) const
 		cameraMotion(0, 0, m.R0, t0, &m.dR0_dtheta);
 		return m;
 	}
+	if (t.norm() < kStillCamera)
+	{
+		// The camera passes through not moving (a turn in place through
+		// theta = 0): E = 0 there, but the Sampson distance only needs E's
+		// direction, whose limit is that of dt.
+		t = dt.norm() >= kStillCamera ? Eigen::Vector3d(dt) : Eigen::Vector3d(dta);
+		t *= kStillCamera / t.norm();
+	}
 	m.E = skew(t) * m.R;
 	m.dE_dtheta = skew(dt) * m.R + skew(t) * m.dR_dtheta;
 	m.dE_dalpha = skew(dta) * m.R;
+	m.translation = t.norm();
 	return m;
 }
 
@@ -225,6 +234,18 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 		theta += step;
 	}
 	if (!(std::abs(theta) <= s.maxTurn)) return std::nullopt;
+	// Each inlier's bearing change can differ from the heading change only by
+	// parallax, at most the camera's translation over the nearest depth a
+	// scene point may have: a fit beyond that is of another motion (a slip
+	// odometry did not see, near a surface).
+	Eigen::Matrix3d R;
+	Eigen::Vector3d t;
+	model.cameraMotion(theta, theta / 2, R, t);
+	std::vector<double> offsets;
+	for (size_t i = 0; i < rays1.size(); i++)
+		if (inlier[i]) offsets.push_back(std::abs(se2::wrap(votes[i] - theta)));
+	std::nth_element(offsets.begin(), offsets.begin() + static_cast<long>(offsets.size() / 2), offsets.end());
+	if (offsets[offsets.size() / 2] > std::atan(t.norm() / s.minDepth) + kVoteBin) return std::nullopt;
 	// The fit's own variance, plus the chord direction's: a chord off the
 	// arc by delta moves the fitted theta by -sum(J dr/dalpha) / sum(J^2)
 	// delta, with delta's prior spread (a "consider" parameter: the images

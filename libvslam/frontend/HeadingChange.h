@@ -30,7 +30,13 @@
  * independently of odometry); a fine search of the truncated squared
  * Sampson distance around it on the arc (alpha = theta/2), then
  * Gauss-Newton for theta on the arc over the matches within `inlierPx` of
- * the model, the inliers chosen again after each step. The predicted std
+ * the model, the inliers chosen again after each step. The fit is kept
+ * only if its inliers' bearing changes (their median; votes ignore
+ * parallax) differ from theta by no more than the parallax the camera's
+ * translation can give at `minDepth`: beyond that the fit explains the
+ * matches with a motion the robot did not make, e.g. a slip the odometry
+ * missed, near a surface, which the epipolar distance alone cannot tell
+ * from a turn (results.md 9.28). The predicted std
  * is that of the least-squares fit (the inliers' residual scatter over the
  * sum of their squared derivatives) plus the chord direction's prior
  * spread carried through the fit's sensitivity to it. The images are not
@@ -52,6 +58,9 @@ struct HeadingChangeSettings
 	int minInliers = 20;  //!< matches that must fit the model
 	double inlierPx = 1.5;  //!< Sampson distance of an inlier, pixels
 	double maxTurn = 45 * M_PI / 180;  //!< largest heading change looked for, rad
+	/** Nearest depth a scene point may have, m: bounds the parallax by
+	 * which a match's bearing change may differ from the heading change. */
+	double minDepth = 0.2;
 };
 
 struct HeadingChangeEstimate
@@ -72,6 +81,7 @@ struct EpipolarMotion
 	 * the rotation, its derivative, and those at theta = 0. */
 	bool still = false;
 	Eigen::Matrix3d R, dR_dtheta, R0, dR0_dtheta;
+	double translation = 0;  //!< of the camera, m (0: still)
 };
 
 /** The epipolar geometry of one robot motion: the residual of a match as

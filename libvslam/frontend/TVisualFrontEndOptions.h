@@ -146,6 +146,9 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double heading_change_inlier_px = 1.5;  //!< epipolar distance of an inlier, px
 	/** Largest heading change between two images looked for, rad (INI: degrees). */
 	double heading_change_max_turn = 45 * M_PI / 180;
+	/** Nearest depth a scene point may have, m: bounds the parallax that may
+	 * separate a match's bearing change from the heading change. */
+	double heading_change_min_depth = 0.2;
 
 	// Map bounding
 	/** Most landmarks kept (0: no limit); beyond it the least useful go. */
