@@ -208,16 +208,11 @@ void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& o
 	const auto previous = m_previousImage.find(obs.sensorLabel);
 	if (previous != m_previousImage.end() && previous->second.timestamp < obs.timestamp)
 	{
-		HeadingChangeSettings settings;
-		settings.matchRatio = m_options.match_ratio;
-		settings.minInliers = m_options.heading_change_min_inliers;
-		settings.inlierPx = m_options.heading_change_inlier_px;
-		settings.maxTurn = m_options.heading_change_max_turn;
-		settings.minDepth = m_options.heading_change_min_depth;
 		// Backwards (odometry's sign): the chord's direction stays near the heading.
 		const mrpt::poses::CPose2D moved = odometryPose - previous->second.odometryPose;
 		const double chord = moved.x() >= 0 ? moved.norm() : -moved.norm();
-		const auto e = estimateHeadingChange(previous->second.features, features, obs.cameraPose, chord, settings);
+		const auto e = estimateHeadingChange(
+			previous->second.features, features, obs.cameraPose, chord, headingChangeSettings(m_options));
 		if (e)
 		{
 			auto h = CObservationHeadingChange::Create();

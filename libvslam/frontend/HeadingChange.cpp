@@ -1,5 +1,6 @@
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/HeadingChange.h>
+#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/models/SE2.h>
 
 
@@ -37,6 +38,17 @@ Eigen::Vector2d normalizedDerivative(const Eigen::Vector3d& p, const Eigen::Vect
 	return {(dp.x() * p.z() - p.x() * dp.z()) / (p.z() * p.z()), (dp.y() * p.z() - p.y() * dp.z()) / (p.z() * p.z())};
 }
 }  // namespace
+
+HeadingChangeSettings vslam::headingChangeSettings(const TVisualFrontEndOptions& o)
+{
+	HeadingChangeSettings s;
+	s.matchRatio = o.match_ratio;
+	s.minInliers = o.heading_change_min_inliers;
+	s.inlierPx = o.heading_change_inlier_px;
+	s.maxTurn = o.heading_change_max_turn;
+	s.minDepth = o.heading_change_min_depth;
+	return s;
+}
 
 PlanarEpipolarModel::PlanarEpipolarModel(const mrpt::poses::CPose3D& mount, double chord)
 	: m_Rm(mount.getRotationMatrix().asEigen()), m_tm(mount.x(), mount.y(), mount.z()), m_chord(chord)

@@ -63,6 +63,10 @@ struct HeadingChangeSettings
 	double minDepth = 0.2;
 };
 
+struct TVisualFrontEndOptions;
+/** The settings of [vslam_frontend]'s heading_change_* keys. */
+HeadingChangeSettings headingChangeSettings(const TVisualFrontEndOptions& options);
+
 struct HeadingChangeEstimate
 {
 	double dphi = 0;  //!< heading change from the first image to the second, rad

@@ -10,7 +10,9 @@
  *
  *   bench_frontend --benchmark_filter='Frame/640/1000/' [--set vslam_frontend.KEY=VALUE ...]
  * Counters: frames/s (items_per_second) and ms per stage: features_ms,
- * search_ms, pose_ms; bytes_per_landmark (points + stored descriptors) and
+ * search_ms, pose_ms, and with --set vslam_frontend.heading_change=true
+ * heading_ms (the heading change from a view 6 cm back and 2 deg turned);
+ * bytes_per_landmark (points + stored descriptors) and
  * index_bytes_per_landmark.
  *
  * Also the descriptor matching of the pose stage alone, ours against
@@ -25,6 +27,7 @@
 #include <libvslam/frontend/CLandmarkDatabase.h>
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
+#include <libvslam/frontend/HeadingChange.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <tests/support/RoomRenderer.h>
@@ -60,6 +63,8 @@ struct Scene
 	FeatureExtractor extractor{options};
 	ImageCalibration calibration;
 	cv::Mat query;  //!< the image every iteration processes
+	ImageFeatures previous;  //!< the view before it, for the heading change
+	double chord = 0;  //!< m between the two
 	std::unique_ptr<CLandmarkDatabase> database;
 };
 
@@ -85,7 +90,10 @@ std::unique_ptr<Scene> makeScene(int width, int landmarks)
 	if (!created.landmark) throw std::runtime_error("bench: no landmark: " + created.why);
 	created.landmark->id = 0;
 	s->database->insert(*created.landmark);
-	s->query = render(room, mrpt::poses::CPose2D(1.6, 2.2, -5 * kDeg));
+	const mrpt::poses::CPose2D queryPose(1.6, 2.2, -5 * kDeg), previousPose(1.54, 2.2, -3 * kDeg);
+	s->query = render(room, queryPose);
+	s->previous = s->extractor.extract(render(room, previousPose), s->calibration);
+	s->chord = (queryPose - previousPose).norm();
 
 	// Others: real descriptors from other rooms, random points.
 	cv::Mat pool;
@@ -126,8 +134,8 @@ void Frame(benchmark::State& state)
 	const int width = static_cast<int>(state.range(0));
 	const int landmarks = static_cast<int>(state.range(1));
 	const auto scene = makeScene(width, landmarks);
-	double features = 0, search = 0, pose = 0;
-	size_t recognized = 0;
+	double features = 0, search = 0, pose = 0, heading = 0;
+	size_t recognized = 0, headingChanges = 0;
 	for (auto _ : state)
 	{
 		auto t = std::chrono::steady_clock::now();
@@ -141,12 +149,24 @@ void Frame(benchmark::State& state)
 		for (const auto& c : candidates)
 			if (recognizeLandmark(f, *scene->database->find(c.id), kMount, scene->options)) recognized++;
 		pose += ms(t);
+		if (scene->options.heading_change)
+		{
+			t = std::chrono::steady_clock::now();
+			if (estimateHeadingChange(scene->previous, f, kMount, scene->chord, headingChangeSettings(scene->options)))
+				headingChanges++;
+			heading += ms(t);
+		}
 	}
 	const double n = static_cast<double>(state.iterations());
 	state.SetItemsProcessed(state.iterations());
 	state.counters["features_ms"] = features / n;
 	state.counters["search_ms"] = search / n;
 	state.counters["pose_ms"] = pose / n;
+	if (scene->options.heading_change)
+	{
+		state.counters["heading_ms"] = heading / n;
+		state.counters["heading_changes_per_frame"] = headingChanges / n;
+	}
 	state.counters["recognized_per_frame"] = recognized / n;
 	state.counters["bytes_per_landmark"] = double(scene->database->landmarkBytes()) / landmarks;
 	state.counters["index_bytes_per_landmark"] = double(scene->database->indexBytes()) / landmarks;
