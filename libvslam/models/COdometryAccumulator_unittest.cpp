@@ -6,6 +6,19 @@
 
 using namespace vslam;
 
+namespace
+{
+/** Odometry noisy enough for a Monte-Carlo check to see its covariance. */
+CMotionModel noisyOdometry()
+{
+	CMotionModel::TOptions o;
+	o.sigma_T = 0.05;
+	o.sigma_R = 0.05;
+	o.sigma_R_per_meter = 0.02;
+	return CMotionModel(o);
+}
+}  // namespace
+
 TEST(COdometryAccumulator, ComposesMeans)
 {
 	COdometryAccumulator acc;
@@ -30,11 +43,7 @@ TEST(COdometryAccumulator, CovarianceMatchesMonteCarlo)
 {
 	// An out-and-back path: the accumulated covariance must keep the noise
 	// of the whole trip although the net displacement is small.
-	CMotionModel::TOptions o;
-	o.sigma_T = 0.05;
-	o.sigma_R = 0.05;
-	o.sigma_R_per_meter = 0.02;
-	const CMotionModel model(o);
+	const CMotionModel model = noisyOdometry();
 	std::vector<se2::Pose> incs;
 	for (int i = 0; i < 10; i++) incs.push_back({0.1, 0, 0});
 	for (int i = 0; i < 10; i++) incs.push_back({0, 0, M_PI / 10});
@@ -68,7 +77,7 @@ TEST(COdometryAccumulator, CovarianceMatchesMonteCarlo)
 	for (const auto& s : samples) cov += (s - mean) * (s - mean).transpose();
 	cov /= N - 1;
 	// The whole trip's noise is kept (2 m travelled), not the net motion's.
-	EXPECT_GT(acc.cov()(0, 0), 0.9 * o.sigma_T * o.sigma_T * 2.0);
+	EXPECT_GT(acc.cov()(0, 0), 0.9 * model.options.sigma_T * model.options.sigma_T * 2.0);
 	for (int r = 0; r < 3; r++)
 		for (int c = 0; c < 3; c++)
 			EXPECT_NEAR(cov(r, c), acc.cov()(r, c), 0.06 * acc.cov().norm())
@@ -111,11 +120,7 @@ TEST(COdometryAccumulator, AReferenceMidwayUsesTheCrossCovarianceOfTheTwoPoses)
 	// a turn and a straight: the gain of the joint update must equal
 	// Cov(s, h) / (Var(h) + R) of sampled paths, h the heading change since
 	// the reference.
-	CMotionModel::TOptions o;
-	o.sigma_T = 0.05;
-	o.sigma_R = 0.05;
-	o.sigma_R_per_meter = 0.02;
-	const CMotionModel model(o);
+	const CMotionModel model = noisyOdometry();
 	std::vector<se2::Pose> first, second;
 	for (int i = 0; i < 8; i++) first.push_back({0.1, 0, i % 2 ? 0.3 : -0.3});
 	for (int i = 0; i < 6; i++) second.push_back({0.05, 0, M_PI / 8});
