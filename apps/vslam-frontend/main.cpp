@@ -40,6 +40,7 @@
 #include <libvslam/eval/HeadingChangeAccuracy.h>
 #include <libvslam/eval/MeasurementAccuracy.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
+#include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
 #include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
@@ -210,6 +211,7 @@ int main(int argc, const char** argv)
 {
 	using namespace vslam;
 	registerObservationClasses();
+	keepImageBuffersInTheProcess();
 	return vslam::runTool("vslam-frontend", kUsage, [&]() -> int {
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;

@@ -8,6 +8,7 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/Trajectory.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
+#include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
 #include <libvslam/io/CPathFileWriter.h>
 #include <libvslam/io/CRawlogReader.h>
@@ -427,6 +428,7 @@ int CVSlamApp::run()
 
 int CVSlamApp::main(int argc, const char** argv)
 {
+	keepImageBuffersInTheProcess();
 	try
 	{
 		if (!initialize(argc, argv)) return kOk;

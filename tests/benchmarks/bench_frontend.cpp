@@ -28,6 +28,7 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/HeadingChange.h>
+#include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <tests/support/RoomRenderer.h>
@@ -231,6 +232,7 @@ BENCHMARK(Frame)
 
 int main(int argc, char** argv)
 {
+	vslam::keepImageBuffersInTheProcess();  // as the apps that run the front-end
 	// --set vslam_frontend.KEY=VALUE (repeatable) before the benchmark's own flags.
 	std::vector<char*> rest{argv[0]};
 	for (int i = 1; i < argc; i++)
