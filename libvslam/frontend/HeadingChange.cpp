@@ -3,7 +3,6 @@
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/models/SE2.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
