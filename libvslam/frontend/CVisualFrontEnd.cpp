@@ -82,7 +82,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	if (m_options.heading_change)
 	{
 		t = Clock::now();
-		measureHeadingChange(obs, view.features, odometryPose, out);
+		view.visualHeading = measureHeadingChange(obs, view.features, odometryPose, out);
 		out.seconds.heading = since(t);
 	}
 
@@ -201,10 +201,11 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	return out;
 }
 
-void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& obs, const ImageFeatures& features,
-	const mrpt::poses::CPose2D& odometryPose, Output& out)
+VisualHeading CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& obs,
+	const ImageFeatures& features, const mrpt::poses::CPose2D& odometryPose, Output& out)
 {
-	PreviousImage current{features, odometryPose, obs.timestamp};
+	// Without a heading change from the previous image, a new chain starts.
+	PreviousImage current{features, odometryPose, obs.timestamp, VisualHeading{++m_headingChains, 0, 0}};
 	const auto previous = m_previousImage.find(obs.sensorLabel);
 	if (previous != m_previousImage.end() && previous->second.timestamp < obs.timestamp)
 	{
@@ -227,11 +228,15 @@ void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& o
 			h->sensorPoseOnRobot = obs.cameraPose;
 			out.headingChanges.push_back(h);
 			m_headingChangesMeasured++;
+			const VisualHeading& before = previous->second.heading;
+			current.heading = {before.chain, before.heading + e->dphi, before.variance + e->stdDphi * e->stdDphi};
 		}
 		else
 			m_headingChangesFailed++;
 	}
+	const VisualHeading heading = current.heading;
 	m_previousImage[obs.sensorLabel] = std::move(current);
+	return heading;
 }
 
 void CVisualFrontEnd::refineScale(VisualLandmarkModel& lm, VisualMeasurement& m,

@@ -84,9 +84,10 @@ class CVisualFrontEnd
 		const mrpt::poses::CPose3D& mount);
 	void prune(const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out);
 	/** The heading change from the camera's previous image to this one, if
-	 * one fits; this image becomes the camera's previous one. */
-	void measureHeadingChange(const mrpt::obs::CObservationImage& obs, const ImageFeatures& features,
-		const mrpt::poses::CPose2D& odometryPose, Output& out);
+	 * one fits; this image becomes the camera's previous one. Returns this
+	 * image's heading along the chain of measured changes. */
+	VisualHeading measureHeadingChange(const mrpt::obs::CObservationImage& obs,
+		const ImageFeatures& features, const mrpt::poses::CPose2D& odometryPose, Output& out);
 
 	/** The last image of a camera, for the next heading change. */
 	struct PreviousImage
@@ -94,6 +95,7 @@ class CVisualFrontEnd
 		ImageFeatures features;
 		mrpt::poses::CPose2D odometryPose;
 		mrpt::Clock::time_point timestamp;
+		VisualHeading heading;
 	};
 
 	TVisualFrontEndOptions m_options;
@@ -113,5 +115,6 @@ class CVisualFrontEnd
 	std::map<std::string, size_t> m_creationRejections;
 	std::map<std::string, PreviousImage> m_previousImage;  //!< by sensor label
 	size_t m_headingChangesMeasured = 0, m_headingChangesFailed = 0;
+	uint64_t m_headingChains = 0;
 };
 }  // namespace vslam

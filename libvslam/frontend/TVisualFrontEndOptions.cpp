@@ -47,6 +47,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range::positive());
 	creation_odometry_sigma_rel =
 		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range::positive());
+	creation_visual_heading = readBool(c, s, "creation_visual_heading", creation_visual_heading);
 	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
 	scale_odometry_sigma =
 		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::nonNegative());
@@ -136,6 +137,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
 	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
+	c.write(s, "creation_visual_heading", creation_visual_heading, 30, 10,
+		"With heading_change: the measured heading between creation views replaces the odometry's");
 	c.write(s, "scale_refinement", scale_refinement, 30, 10, "Refine landmark scales from later sightings and odometry");
 	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (0: [vslam_motion_model] sigma_T)");
 	c.write(s, "scale_pair_min_travel", scale_pair_min_travel, 30, 10, "Travel between paired sightings, at least [m]");

@@ -57,6 +57,17 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * trading rotation for sideways translation (bas-relief ambiguity). */
 	double creation_odometry_sigma_deg = 1.0;
 	double creation_odometry_sigma_rel = 0.05;
+	/** With heading_change: between creation views linked by measured
+	 * heading changes, their summed heading replaces the odometry's and its
+	 * std the prior's about the vertical (creation_odometry_sigma_deg then
+	 * holds only the tilt). Forward motion makes a landmark's depths trade
+	 * against that heading: an error of 0.2 deg tilts a wall's depths by
+	 * about 10% at the image's edges, and every later measurement of it
+	 * errs in heading in proportion to its distance from the creation. It
+	 * halves the measurements' median heading error on the rendered
+	 * sequences, but the filter's error does not fall with it, so it is off
+	 * (results.md 9.29). */
+	bool creation_visual_heading = false;
 
 	/** Refine each landmark's scale from its later sightings against the
 	 * odometry between them (LandmarkScaleTrack.h). */
