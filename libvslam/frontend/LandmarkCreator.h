@@ -19,7 +19,6 @@
 #include <Eigen/Core>
 
 #include <cstdint>
-
 #include <optional>
 #include <string>
 #include <vector>
