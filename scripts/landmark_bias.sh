@@ -30,6 +30,10 @@ for csv in "$@"; do
     END {for (k in n) if (n[k] >= 8 && hi[k] - lo[k] >= 0.5) {
       d = n[k] * sxx[k] - sx[k] * sx[k]; print (n[k] * sxy[k] - sx[k] * sy[k]) / d }}' <<< "$rows")"
   count="$(grep -c . <<< "$slopes" || true)"
+  if [[ "$count" -eq 0 ]]; then
+    echo "$csv: no landmark with 8 accepted measurements over 0.5 m of true_dx"
+    continue
+  fi
   absMedian="$(awk '{print ($1 < 0 ? -$1 : $1)}' <<< "$slopes" | median)"
   rms="$(awk '{s += $1 * $1} END {printf "%.2f", NR ? sqrt(s / NR) : 0}' <<< "$slopes")"
   headingMedian="$(awk '{print ($3 < 0 ? -$3 : $3)}' <<< "$rows" | median)"
