@@ -72,8 +72,8 @@ class NormalEquations
 	std::vector<std::array<BlockOffsets, 4>> m_blocks;
 	std::vector<long> m_diagonal;
 
-	/** Of the block at (block row, block column), both free nodes'
-	 * indices among the free nodes. */
+	/** The offsets of the block at (blockRow, blockCol); both are indices
+	 * among the free nodes. */
 	BlockOffsets blockOffsets(size_t blockRow, size_t blockCol) const;
 };
 
