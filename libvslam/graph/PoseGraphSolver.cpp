@@ -185,8 +185,10 @@ void NormalEquations::linearize(
 void NormalEquations::damp(
 	double lambda, double floor, Eigen::SparseMatrix<double>& damped) const
 {
-	if (damped.nonZeros() != m_H.nonZeros()) damped = m_H;
-	std::copy(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), damped.valuePtr());
+	if (damped.nonZeros() != m_H.nonZeros())
+		damped = m_H;  // the pattern, once per solve
+	else
+		std::copy(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), damped.valuePtr());
 	const double* h = m_H.valuePtr();
 	double* d = damped.valuePtr();
 	for (const long k : m_diagonal) d[k] += lambda * (h[k] + floor);
