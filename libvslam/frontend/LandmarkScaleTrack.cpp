@@ -78,9 +78,10 @@ void LandmarkScaleTrack::foldOldestPair()
 {
 	const Pair& oldest = m_pairs.front();
 	const double variance = oldest.variance(scaleError(), m_settings.odometrySigma);
-	if (oldest.used && m_fixedWeightedSum + oldest.vo / variance > 0)
+	const double information = oldest.displacementSquared(m_settings.odometrySigma) / variance;
+	if (oldest.used && m_fixedWeightedSum + oldest.vo / variance > 0 && m_fixedInformation + information > 0)
 	{
-		m_fixedInformation += oldest.oo / variance;
+		m_fixedInformation += information;
 		m_fixedWeightedSum += oldest.vo / variance;
 		m_foldedUsed++;
 	}
@@ -104,7 +105,7 @@ void LandmarkScaleTrack::estimate()
 		for (size_t i = 0; i < m_pairs.size(); i++)
 			if (m_pairs[i].used)
 			{
-				information += m_pairs[i].oo / variance[i];
+				information += m_pairs[i].displacementSquared(m_settings.odometrySigma) / variance[i];
 				weightedSum += m_pairs[i].vo / variance[i];
 			}
 		// The worst pair against the estimate without it.
@@ -114,14 +115,15 @@ void LandmarkScaleTrack::estimate()
 		{
 			if (!m_pairs[i].used) continue;
 			const Pair& p = m_pairs[i];
-			const double othersInformation = information - p.oo / variance[i];
+			const double othersInformation =
+				information - p.displacementSquared(m_settings.odometrySigma) / variance[i];
 			const double k = (weightedSum - p.vo / variance[i]) / othersInformation;
 			const double residual = std::max(0.0, p.vv - 2 * k * p.vo + k * k * p.oo);
 			const double chi2 = residual / (variance[i] + p.oo / othersInformation);
 			if (chi2 > worst) worst = chi2, worstAt = i;
 		}
-		// A non-positive estimate is no scale: drop the worst pair too.
-		if (worstAt < m_pairs.size() && (worst > kGate99 || !(weightedSum > 0)))
+		// A non-positive estimate (or information) is no scale: drop the worst pair too.
+		if (worstAt < m_pairs.size() && (worst > kGate99 || !(weightedSum > 0) || !(information > 0)))
 		{
 			m_pairs[worstAt].used = false;
 			continue;

@@ -18,9 +18,17 @@
  * of the first solve), sigma_v the solves' predicted position std and
  * sigma_T the odometry's translation noise per sqrt(metre) travelled (the
  * motion model's). The creation baseline B enters as a prior k = 1 with
- * variance sigma_T^2 / B. The weighted least-squares estimate is
+ * variance sigma_T^2 / B. The estimate is
  *
- *     k = (B / sigma_T^2 + sum <v_i, o_i> / var_i) / (B / sigma_T^2 + sum |o_i|^2 / var_i)
+ *     k = (B / sigma_T^2 + sum <v_i, o_i> / var_i) / (B / sigma_T^2 + sum d_i / var_i),
+ *     d_i = |o_i|^2 - 2 sigma_T^2 travel_i
+ *
+ * The odometry's noise lengthens its displacements on average (|o_i|^2 by
+ * 2 sigma_T^2 travel_i, both axes), so a plain least-squares ratio (|o_i|^2
+ * for d_i) would take every landmark for smaller than it is, by about 2%
+ * for pairs 0.3 m long; d_i is the unbiased estimate of the true squared
+ * displacement (an errors-in-variables correction; it relies on sigma_T
+ * being the odometry's true noise, which scale_odometry_sigma can state).
  *
  * Pairs are chained (each sighting is the next pair's start) so their
  * odometry noise is independent; a pair is formed once the robot has
@@ -108,6 +116,12 @@ class LandmarkScaleTrack
 		double variance(double k, double odometrySigma) const
 		{
 			return sightingsVariance + k * k * odometrySigma * odometrySigma * travel;
+		}
+		/** |o|^2 less the odometry noise's mean share of it: the true
+		 * squared displacement, unbiased (may come out negative). */
+		double displacementSquared(double odometrySigma) const
+		{
+			return oo - 2 * odometrySigma * odometrySigma * travel;
 		}
 	};
 	/** The oldest pair leaves the judged window, into the fixed part if it
