@@ -12,6 +12,10 @@
 #   too near. For every landmark with at least 5 measurements more than
 #   0.4 m from its frame, the least-squares ratio of the measured to the
 #   true displacement (dx, dy); the median |ratio - 1| and the largest;
+# - scale, later half: the same ratio over the second half (in time) of
+#   those measurements, for every landmark with at least 10 of them (what
+#   the scale track left after its first sightings); the median
+#   |ratio - 1| and the mean of ratio - 1 (its sign: too large or small);
 # - the median |heading error| of all accepted measurements.
 #
 #   scripts/landmark_bias.sh ACCURACY.csv [...]
@@ -42,7 +46,16 @@ for csv in "$@"; do
   scaleCount="$(grep -c . <<< "$scales" || true)"
   scaleMedian="$(median <<< "$scales")"
   scaleMax="$(sort -g <<< "$scales" | tail -n 1)"
-  printf '%s: heading error slope over %s landmarks: median |.| %.2f deg/m, RMS %s deg/m; scale error over %s landmarks: median %.1f%%, largest %.1f%%; accepted heading error median |.| %.3f deg\n' \
+  # The CSV is in time order: each landmark's far measurements are numbered
+  # as they come, and the second half is taken once their count is known.
+  laterScales="$(awk '$2 * $2 + $4 * $4 > 0.16 {i = ++n[$1]; mt[$1, i] = $5 * $2 + $6 * $4; tt[$1, i] = $2 * $2 + $4 * $4}
+    END {for (k in n) if (n[k] >= 10) {a = b = 0; for (i = int(n[k] / 2) + 1; i <= n[k]; i++) {a += mt[k, i]; b += tt[k, i]}
+      print a / b - 1 }}' <<< "$rows")"
+  laterCount="$(grep -c . <<< "$laterScales" || true)"
+  laterMedian="$(awk '{print ($1 < 0 ? -$1 : $1)}' <<< "$laterScales" | median)"
+  laterMean="$(awk '{s += $1} END {print NR ? s / NR : "nan"}' <<< "$laterScales")"
+  printf '%s: heading error slope over %s landmarks: median |.| %.2f deg/m, RMS %s deg/m; scale error over %s landmarks: median %.1f%%, largest %.1f%%; later half over %s landmarks: median |.| %.1f%%, mean %+.1f%%; accepted heading error median |.| %.3f deg\n' \
     "$csv" "$count" "$absMedian" "$rms" "$scaleCount" "$(awk '{print 100 * $1}' <<< "$scaleMedian")" \
-    "$(awk '{print 100 * $1}' <<< "$scaleMax")" "$headingMedian"
+    "$(awk '{print 100 * $1}' <<< "$scaleMax")" "$laterCount" "$(awk '{print 100 * $1}' <<< "$laterMedian")" \
+    "$(awk '{print 100 * $1}' <<< "$laterMean")" "$headingMedian"
 done

@@ -74,7 +74,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	bool scale_refinement = true;
 	/** The odometry's translation noise, m/sqrt(m) travelled; 0: the
 	 * motion model's sigma_T ([vslam_motion_model] of the same INI), so
-	 * the two cannot disagree by oversight. */
+	 * the two cannot disagree by oversight. The scale track takes this
+	 * noise's mean share out of each odometry displacement, so it should
+	 * be the odometry's true noise: one stated too large makes landmarks
+	 * too small. */
 	double scale_odometry_sigma = 0;
 	double scale_pair_min_travel = 0.3;  //!< m of travel between paired sightings, at least
 	double scale_pair_max_travel = 2.0;  //!< ... and at most
