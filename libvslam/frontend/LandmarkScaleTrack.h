@@ -25,7 +25,7 @@
  *
  * The odometry's noise lengthens its displacements on average (|o_i|^2 by
  * 2 sigma_T^2 travel_i, both axes), so a plain least-squares ratio (|o_i|^2
- * for d_i) would take every landmark for smaller than it is, by about 2%
+ * for d_i) would take every landmark for smaller than it is, by about 1.7%
  * for pairs 0.3 m long; d_i is the unbiased estimate of the true squared
  * displacement (an errors-in-variables correction; it relies on sigma_T
  * being the odometry's true noise, which scale_odometry_sigma can state).

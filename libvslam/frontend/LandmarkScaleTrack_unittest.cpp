@@ -119,7 +119,7 @@ TEST(LandmarkScaleTrack, NoisyOdometryDoesNotShrinkTheEstimate)
 	// many seeds the estimates must centre on k = 1. The odometry's noise
 	// lengthens its displacements on average (|o|^2 gains 2 sigma_T^2 travel),
 	// which a plain least-squares ratio mistakes for a smaller k: about
-	// 1.5% here, many times the mean's standard error.
+	// 1.2% here (0.9883 over these seeds), twelve times the mean's standard error.
 	DriveSettings d;
 	d.trueScaleError = 1.0;
 	const int seeds = 1000;
