@@ -93,10 +93,12 @@ void LandmarkScaleTrack::foldOldestPair()
 void LandmarkScaleTrack::estimate()
 {
 	const double kBefore = scaleError();
-	std::vector<double> variance(m_pairs.size());
+	// Each pair's variance and its information on k, with k as it was.
+	std::vector<double> variance(m_pairs.size()), pairInformation(m_pairs.size());
 	for (size_t i = 0; i < m_pairs.size(); i++)
 	{
 		variance[i] = m_pairs[i].variance(kBefore, m_settings.odometrySigma);
+		pairInformation[i] = m_pairs[i].displacementSquared(m_settings.odometrySigma) / variance[i];
 		m_pairs[i].used = true;
 	}
 	for (;;)
@@ -105,7 +107,7 @@ void LandmarkScaleTrack::estimate()
 		for (size_t i = 0; i < m_pairs.size(); i++)
 			if (m_pairs[i].used)
 			{
-				information += m_pairs[i].displacementSquared(m_settings.odometrySigma) / variance[i];
+				information += pairInformation[i];
 				weightedSum += m_pairs[i].vo / variance[i];
 			}
 		// The worst pair against the estimate without it.
@@ -115,8 +117,7 @@ void LandmarkScaleTrack::estimate()
 		{
 			if (!m_pairs[i].used) continue;
 			const Pair& p = m_pairs[i];
-			const double othersInformation =
-				information - p.displacementSquared(m_settings.odometrySigma) / variance[i];
+			const double othersInformation = information - pairInformation[i];
 			const double k = (weightedSum - p.vo / variance[i]) / othersInformation;
 			const double residual = std::max(0.0, p.vv - 2 * k * p.vo + k * k * p.oo);
 			const double chi2 = residual / (variance[i] + p.oo / othersInformation);
