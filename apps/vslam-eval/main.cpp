@@ -30,6 +30,8 @@ const char* kUsage =
 	"  --run DIR: the estimate is DIR/estimated_path.tum, the odometry DIR/odometry_path.tum,\n"
 	"     and the figures go to DIR/figures/ (unless --figures says otherwise).\n"
 	"Prints ATE (RMSE, mean, median, max, heading RMSE) raw and after SE(2) alignment,\n"
+	"then after the best similarity (SE(2) and a scale: how much of the error a map\n"
+	"built too large or too small explains; the scale maps the estimate onto the truth),\n"
 	"and RPE (translation, rotation, drift as % of distance) per window; the same for\n"
 	"the odometry if given. Options:\n"
 	"  --align             the aligned ATE first (and the figures and CSV aligned)\n"
@@ -54,11 +56,13 @@ double positiveNumber(const std::string& option, const char* text)
 	return v;
 }
 
-void printAte(const std::string& prefix, const vslam::AteStats& s, bool aligned)
+void printAte(const std::string& prefix, const vslam::AteStats& s, const vslam::AteOptions& o)
 {
-	std::printf("%s%s: poses %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f\n", prefix.c_str(),
-		aligned ? "ate_se2_aligned" : "ate", s.associated, s.rmse, s.mean, s.median, s.max,
-		s.headingRmse * 180 / M_PI);
+	const char* name = !o.align ? "ate" : o.alignScale ? "ate_sim2_aligned" : "ate_se2_aligned";
+	std::printf("%s%s: poses %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f", prefix.c_str(),
+		name, s.associated, s.rmse, s.mean, s.median, s.max, s.headingRmse * 180 / M_PI);
+	if (o.alignScale) std::printf(" scale %.4f", s.alignmentScale);
+	std::printf("\n");
 }
 
 void printRpe(const std::string& prefix, const vslam::RpeStats& s, const vslam::RpeOptions& o)
@@ -73,8 +77,8 @@ void printRpe(const std::string& prefix, const vslam::RpeStats& s, const vslam::
 		s.meanTravelled > 0 ? 100 * s.translation.mean / s.meanTravelled : 0.0);
 }
 
-/** Both ATE lines (the asked-for one first) and the RPE lines; returns the
- * asked-for ATE. */
+/** Both ATE lines (the asked-for one first), the one after the best
+ * similarity, and the RPE lines; returns the asked-for ATE. */
 vslam::AteStats report(const std::string& prefix, const vslam::Trajectory& estimate, const vslam::Trajectory& truth,
 	vslam::AteOptions o, const std::vector<vslam::RpeOptions>& windows)
 {
@@ -82,9 +86,11 @@ vslam::AteStats report(const std::string& prefix, const vslam::Trajectory& estim
 	if (asked.associated == 0)
 		throw vslam::InputError(
 			(prefix.empty() ? "the estimate" : "the odometry") + std::string(": no pose has ground truth at its time"));
-	printAte(prefix, asked, o.align);
+	printAte(prefix, asked, o);
 	o.align = !o.align;
-	printAte(prefix, vslam::computeAte(estimate, truth, o), o.align);
+	printAte(prefix, vslam::computeAte(estimate, truth, o), o);
+	o.align = o.alignScale = true;
+	printAte(prefix, vslam::computeAte(estimate, truth, o), o);
 	for (auto w : windows)
 	{
 		w.maxGap = o.maxGap;

@@ -55,6 +55,32 @@ TEST(VslamEval, AShiftedEstimateHasExactlyItsShiftAsAbsoluteErrorAndNoRelativeEr
 	EXPECT_EQ(valueOf(r.output, "rpe_2s", "pairs"), 280) << r.output;
 	EXPECT_NEAR(valueOf(r.output, "rpe_0.5m", "rot_rmse_deg"), 0, 1e-3) << r.output;
 	EXPECT_EQ(lineCount(dir.file("errors.csv")), 301u);  // header + one row per pose
+	// A shift is no stretch: the similarity finds scale 1 and no error.
+	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "scale"), 1, 1e-4) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "rmse"), 0, 1e-4) << r.output;
+}
+
+TEST(VslamEval, AnEstimateTooLargeIsExplainedByTheSimilarityWithItsScale)
+{
+	// The estimate 2% too large about the truth's start: its SE(2)-aligned
+	// error stays; the similarity line gives the scale back (1 / 1.02) and
+	// no error.
+	TempDir dir;
+	vslam::Trajectory truth, large;
+	for (int i = 0; i < 300; i++)
+	{
+		const double t = 100 + 0.1 * i, a = 0.02 * i;
+		truth.push_back({t, {2 * std::cos(a), std::sin(a), a}});
+		large.push_back({t, {2 + 1.02 * (2 * std::cos(a) - 2), 1.02 * std::sin(a), a}});
+	}
+	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
+	vslam::writeTumTrajectory(dir.file("large.tum"), large);
+	const auto r = runCommand(kBin + "vslam-eval " + quoted(dir.file("large.tum")) + " " + quoted(dir.file("truth.tum")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_GT(valueOf(r.output, "ate_se2_aligned", "rmse"), 0.01) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "scale"), 1 / 1.02, 1e-4) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "rmse"), 0, 1e-4) << r.output;
+	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "heading_rmse_deg"), 0, 1e-3) << r.output;
 }
 
 TEST(VslamEval, AVslamRunGetsEveryFigureAndTheOdometryBesideIt)
@@ -68,7 +94,8 @@ TEST(VslamEval, AVslamRunGetsEveryFigureAndTheOdometryBesideIt)
 	const auto r = runCommand(kBin + "vslam-eval --run " + quoted(out) + " " + quoted(truth) + " --csv " +
 		quoted(dir.file("e.csv")) + " --landmarks " + quoted(kSource + "/rawlogs/demo_visual_landmarks.txt"));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
-	for (const char* line : {"ate", "ate_se2_aligned", "odometry_ate", "odometry_ate_se2_aligned"})
+	for (const char* line : {"ate", "ate_se2_aligned", "ate_sim2_aligned", "odometry_ate", "odometry_ate_se2_aligned",
+			 "odometry_ate_sim2_aligned"})
 		EXPECT_EQ(valueOf(r.output, line, "poses"), 400) << line << "\n" << r.output;
 	// The map against the simulator's landmarks: every mapped landmark has
 	// its true partner (same IDs).
