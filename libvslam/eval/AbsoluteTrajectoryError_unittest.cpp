@@ -47,6 +47,43 @@ TEST(AbsoluteTrajectoryError, TranslatedAndRotatedEstimates)
 	EXPECT_NEAR(aligned.headingRmse, 0, 1e-9);
 }
 
+TEST(AbsoluteTrajectoryError, AScaledEstimateIsExplainedByTheSimilarityAlone)
+{
+	// An estimate 3% too large about a point off the path, then moved and
+	// turned: the SE(2) alignment leaves the stretch, the similarity
+	// finds the scale back (1 / 1.03) and no error.
+	const auto gt = circle(0, 0.1, 100);
+	auto est = gt;
+	for (auto& p : est) p.pose.x = 1.03 * (p.pose.x - 0.7), p.pose.y = 1.03 * (p.pose.y + 0.2);
+	est = transformed(est, {0.3, -0.2, 0.4});
+	const auto rigid = computeAte(est, gt, {0.5, true, false});
+	EXPECT_GT(rigid.rmse, 0.02);  // 3% of a 2 m radius, about 0.06 m
+	EXPECT_DOUBLE_EQ(rigid.alignmentScale, 1);
+	const auto similar = computeAte(est, gt, {0.5, true, true});
+	EXPECT_NEAR(similar.alignmentScale, 1 / 1.03, 1e-9);
+	EXPECT_NEAR(similar.rmse, 0, 1e-9);
+	EXPECT_NEAR(similar.headingRmse, 0, 1e-9);  // a scale does not turn a heading
+	// Without alignment the scale option does nothing.
+	EXPECT_DOUBLE_EQ(computeAte(est, gt, {0.5, false, true}).rmse, computeAte(est, gt).rmse);
+}
+
+TEST(AbsoluteTrajectoryError, TheSimilarityOfAnUnscaledNoisyEstimateIsNearOne)
+{
+	// Noise alone should not read as a scale: 0.1 m per axis on a 2 m
+	// circle, 5,000 poses; the least-squares scale is biased towards zero
+	// by the noise's share of the estimate's spread (0.02 / 4, 0.5%), so
+	// the check allows that and no more than a few standard errors
+	// (0.1 / (2 sqrt(5000)) = 0.0007) beyond it.
+	const auto gt = circle(0, 0.01, 5000);
+	auto est = gt;
+	mrpt::random::CRandomGenerator rng(5);
+	for (auto& p : est)
+		p.pose.x += 0.1 * rng.drawGaussian1D_normalized(), p.pose.y += 0.1 * rng.drawGaussian1D_normalized();
+	const auto s = computeAte(est, gt, {0.5, true, true});
+	EXPECT_NEAR(s.alignmentScale, 1 - 0.02 / 4.02, 0.003);
+	EXPECT_LE(s.rmse, computeAte(est, gt, {0.5, true, false}).rmse);  // one more parameter fits no worse
+}
+
 TEST(AbsoluteTrajectoryError, NoisyEstimatesHaveTheNoiseLevel)
 {
 	const auto gt = circle(0, 0.01, 5000);
