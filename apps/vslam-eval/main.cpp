@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -36,6 +37,9 @@ const char* kUsage =
 	"the odometry if given. Options:\n"
 	"  --align             the aligned ATE first (and the figures and CSV aligned)\n"
 	"  --max-gap S         largest ground-truth gap to interpolate across (default 0.5 s)\n"
+	"  --from S, --to S    score only the poses S seconds or more after the estimate's\n"
+	"                      first (--from) and before S seconds after it (--to): e.g. a\n"
+	"                      run's exploration and what follows it, each aligned on its own\n"
 	"  --rpe-time S        RPE window in seconds (default 1; repeatable)\n"
 	"  --rpe-distance M    RPE window in metres travelled (repeatable)\n"
 	"  --odometry PATH     dead reckoning to evaluate and draw beside the estimate\n"
@@ -125,6 +129,7 @@ int main(int argc, const char** argv)
 	try
 	{
 		AteOptions o;
+		double from = 0, to = std::numeric_limits<double>::infinity();
 		std::vector<RpeOptions> windows;
 		std::vector<std::string> files;
 		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile;
@@ -141,6 +146,10 @@ int main(int argc, const char** argv)
 				o.align = true;
 			else if (a == "--max-gap" && hasValue)
 				o.maxGap = positiveNumber(a, argv[++i]);
+			else if (a == "--from" && hasValue)
+				from = vslam::numberArgument(a, argv[++i]);
+			else if (a == "--to" && hasValue)
+				to = positiveNumber(a, argv[++i]);
 			else if ((a == "--rpe-time" || a == "--rpe-distance") && hasValue)
 			{
 				RpeOptions w;
@@ -181,13 +190,18 @@ int main(int argc, const char** argv)
 		if (files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
 		if (windows.empty()) windows.push_back(RpeOptions());  // 1 s, as the TUM tools
 
-		const Trajectory estimate = readTrajectory(files[0]), truth = readTrajectory(files[1]);
+		if (!(from < to)) throw std::invalid_argument("--from must be before --to");
+		const Trajectory whole = readTrajectory(files[0]), truth = readTrajectory(files[1]);
+		const double t0 = whole.empty() ? 0 : whole.front().t;
+		const Trajectory estimate = timeWindow(whole, t0, from, to);
+		if (estimate.empty() && !whole.empty())
+			throw vslam::InputError("'" + files[0] + "': no pose between --from and --to");
 		const AteStats s = report("", estimate, truth, o, windows);
 		std::vector<std::pair<std::string, AteStats>> csv{{"estimate", s}};
 		std::optional<Trajectory> odometry;
 		if (!odometryFile.empty())
 		{
-			odometry = readTrajectory(odometryFile);
+			odometry = timeWindow(readTrajectory(odometryFile), t0, from, to);
 			AteOptions raw = o;
 			raw.align = false;  // odometry starts where the truth does
 			csv.push_back({"odometry", report("odometry_", *odometry, truth, raw, windows)});

@@ -101,4 +101,13 @@ std::optional<se2::Pose> interpolate(const Trajectory& tr, double t, double maxG
 					 a.pose.y + s * (b.pose.y - a.pose.y),
 					 se2::wrap(a.pose.phi + s * se2::wrap(b.pose.phi - a.pose.phi))};
 }
+
+Trajectory timeWindow(const Trajectory& trajectory, double t0, double from, double to)
+{
+	const bool everything = from <= 0 && std::isinf(to) && to > 0;
+	Trajectory out;
+	for (const auto& p : trajectory)
+		if (everything || (p.t - t0 >= from && p.t - t0 < to)) out.push_back(p);
+	return out;
+}
 }  // namespace vslam

@@ -41,6 +41,12 @@ void writeTumTrajectory(const std::string& file, const Trajectory& trajectory);
 std::optional<se2::Pose> interpolate(
 	const Trajectory& sortedByTime, double t, double maxGap);
 
+/** The poses whose time is in [t0 + from, t0 + to) (evo's --t_start /
+ * --t_end, relative): the part of a run to score on its own, e.g. the
+ * exploration before the path comes back, or what follows it. Poses
+ * without a time are kept only by the full window (from <= 0, to infinite). */
+Trajectory timeWindow(const Trajectory& trajectory, double t0, double from, double to);
+
 /** Quaternion (qx, qy, qz, qw) of a rotation about z. */
 inline void yawToQuaternion(double yaw, double q[4])
 {

@@ -4,6 +4,7 @@
 #include <tests/support/TempDir.h>
 
 #include <fstream>
+#include <limits>
 
 using namespace vslam;
 
@@ -88,4 +89,20 @@ TEST(Trajectory, MrptPoseListsAreIndexedBySteps)
 	EXPECT_NEAR(gt[1].pose.phi, 0.25, 1e-12);
 	std::ofstream(dir.file("r.txt")) << "7 1.0 2.0 0 0.5 0 0 1700000000.5\n";
 	EXPECT_EQ(readTrajectory(dir.file("r.txt"))[0].step, 7);
+}
+
+TEST(Trajectory, ATimeWindowKeepsThePosesFromItsStartUpToItsEnd)
+{
+	Trajectory tr;
+	for (int i = 0; i < 10; i++) tr.push_back({100.0 + i, {double(i), 0, 0}});
+	const Trajectory middle = timeWindow(tr, 100, 2, 5);  // 102, 103, 104: start in, end out
+	ASSERT_EQ(middle.size(), 3u);
+	EXPECT_EQ(middle.front().t, 102);
+	EXPECT_EQ(middle.back().t, 104);
+	EXPECT_EQ(timeWindow(tr, 100, 7, std::numeric_limits<double>::infinity()).size(), 3u);
+	EXPECT_TRUE(timeWindow(tr, 100, 20, 30).empty());
+	// Poses without a time: only the whole run keeps them.
+	Trajectory steps{{std::nan(""), {0, 0, 0}, 0}, {std::nan(""), {1, 0, 0}, 1}};
+	EXPECT_EQ(timeWindow(steps, 0, 0, std::numeric_limits<double>::infinity()).size(), 2u);
+	EXPECT_TRUE(timeWindow(steps, 0, 0, 10).empty());
 }

@@ -60,6 +60,40 @@ TEST(VslamEval, AShiftedEstimateHasExactlyItsShiftAsAbsoluteErrorAndNoRelativeEr
 	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "rmse"), 0, 1e-4) << r.output;
 }
 
+TEST(VslamEval, FromAndToScoreOnlyThePartOfTheRunBetweenThem)
+{
+	// Exact for its first 20 s, then 0.4 m off: each part scored alone
+	// has exactly its own error, the odometry is windowed the same way.
+	TempDir dir;
+	vslam::Trajectory truth, estimate;
+	for (int i = 0; i < 300; i++)
+	{
+		const double t = 100 + 0.1 * i, a = 0.02 * i;
+		truth.push_back({t, {std::cos(a), std::sin(a), a + M_PI / 2}});
+		estimate.push_back({t, {std::cos(a) + (t >= 120 ? 0.4 : 0), std::sin(a), a + M_PI / 2}});
+	}
+	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
+	vslam::writeTumTrajectory(dir.file("estimate.tum"), estimate);
+	const std::string files = quoted(dir.file("estimate.tum")) + " " + quoted(dir.file("truth.tum"));
+	const std::string odometry = " --odometry " + quoted(dir.file("estimate.tum"));
+	const auto first = runCommand(kBin + "vslam-eval " + files + odometry + " --to 20");
+	ASSERT_EQ(first.exitCode, 0) << first.output;
+	EXPECT_EQ(valueOf(first.output, "ate", "poses"), 200) << first.output;
+	EXPECT_NEAR(valueOf(first.output, "ate", "max"), 0, 1e-4) << first.output;
+	EXPECT_EQ(valueOf(first.output, "odometry_ate", "poses"), 200) << first.output;
+	const auto later = runCommand(kBin + "vslam-eval " + files + " --from 20");
+	ASSERT_EQ(later.exitCode, 0) << later.output;
+	EXPECT_EQ(valueOf(later.output, "ate", "poses"), 100) << later.output;
+	EXPECT_NEAR(valueOf(later.output, "ate", "median"), 0.4, 1e-4) << later.output;
+	// A window with nothing in it, or the wrong way round, is one clear error.
+	const auto empty = runCommand(kBin + "vslam-eval " + files + " --from 40 --to 50");
+	EXPECT_NE(empty.exitCode, 0);
+	EXPECT_TRUE(contains(empty.output, "no pose between --from and --to")) << empty.output;
+	const auto reversed = runCommand(kBin + "vslam-eval " + files + " --from 20 --to 10");
+	EXPECT_NE(reversed.exitCode, 0);
+	EXPECT_TRUE(contains(reversed.output, "--from must be before --to")) << reversed.output;
+}
+
 TEST(VslamEval, AnEstimateTooLargeIsExplainedByTheSimilarityWithItsScale)
 {
 	// The estimate 2% too large about the truth's start: its SE(2)-aligned
