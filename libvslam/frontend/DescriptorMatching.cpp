@@ -17,13 +17,16 @@ constexpr int kRowsPerBlock = 256;
 ConstRows asEigen(const cv::Mat& m) { return ConstRows(m.ptr<float>(), m.rows, m.cols); }
 
 /** The two nearest rows of `b` (j1 nearest) by the ranking scores
- * |b_j|^2 - 2 a.b_j of one row of the product. */
-std::pair<int, int> twoNearest(const float* dotsRow, const Eigen::VectorXf& bNorms)
+ * |b_j|^2 - 2 a.b_j of one row of the product, among the rows `allowed`
+ * lets row `ai` of a match (all if none); -1 where there is none. */
+std::pair<int, int> twoNearest(
+	const float* dotsRow, const Eigen::VectorXf& bNorms, int ai, const vslam::MatchFilter* allowed)
 {
 	float s1 = std::numeric_limits<float>::infinity(), s2 = s1;
-	int j1 = 0, j2 = 1;
+	int j1 = allowed ? -1 : 0, j2 = allowed ? -1 : 1;
 	for (int j = 0; j < bNorms.size(); j++)
 	{
+		if (allowed && !(*allowed)(ai, j)) continue;
 		const float s = bNorms[j] - 2 * dotsRow[j];
 		if (s < s1)
 		{
@@ -44,6 +47,12 @@ std::pair<int, int> twoNearest(const float* dotsRow, const Eigen::VectorXf& bNor
 
 std::vector<std::pair<int, int>> vslam::matchDescriptors(const cv::Mat& a, const cv::Mat& b, double ratio)
 {
+	return matchDescriptors(a, b, ratio, nullptr);
+}
+
+std::vector<std::pair<int, int>> vslam::matchDescriptors(
+	const cv::Mat& a, const cv::Mat& b, double ratio, const MatchFilter* allowed)
+{
 	std::vector<std::pair<int, int>> out;
 	if (a.rows == 0 || b.rows < 2) return out;
 	if (a.type() != CV_32F || b.type() != CV_32F || a.cols != b.cols)
@@ -61,8 +70,9 @@ std::vector<std::pair<int, int>> vslam::matchDescriptors(const cv::Mat& a, const
 		dots.noalias() = A.middleRows(start, n) * B.transpose();
 		for (int i = 0; i < n; i++)
 		{
-			auto [j1, j2] = twoNearest(dots.row(i).data(), bNorms);
 			const int ai = start + i;
+			auto [j1, j2] = twoNearest(dots.row(i).data(), bNorms, ai, allowed);
+			if (j2 < 0) continue;  // no second candidate: no ratio test
 			float d1 = (A.row(ai) - B.row(j1)).norm(), d2 = (A.row(ai) - B.row(j2)).norm();
 			if (d2 < d1)
 			{

@@ -9,6 +9,7 @@
  */
 #include <opencv2/core.hpp>
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -17,4 +18,14 @@ namespace vslam
 /** Ratio-test matches from `a` to `b` (index pairs (row of a, row of b),
  * ordered by b), each `b` used once. Both CV_32F with the same columns. */
 std::vector<std::pair<int, int>> matchDescriptors(const cv::Mat& a, const cv::Mat& b, double ratio);
+
+/** Whether row i of `a` may match row j of `b`. */
+using MatchFilter = std::function<bool(int i, int j)>;
+
+/** The same among the pairs `allowed` lets through (all if null): the
+ * nearest and second nearest of each row of `a` are sought among its
+ * allowed rows of `b` only (a guided search, e.g. near an epipolar line);
+ * a row with fewer than two allowed rows is not matched. */
+std::vector<std::pair<int, int>> matchDescriptors(
+	const cv::Mat& a, const cv::Mat& b, double ratio, const MatchFilter* allowed);
 }  // namespace vslam

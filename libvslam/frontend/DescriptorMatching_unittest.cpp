@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -108,4 +109,35 @@ TEST(DescriptorMatching, EmptyAndInvalidInput)
 	cv::hconcat(a2, cv::Mat::zeros(50, 8, CV_32F), wideA);
 	cv::hconcat(b2, cv::Mat::zeros(40, 8, CV_32F), wideB);
 	EXPECT_EQ(matchDescriptors(wideA.colRange(0, 128), wideB.colRange(0, 128), 0.8), referenceMatches(a2, b2, 0.8));
+}
+
+TEST(DescriptorMatching, AGuidedSearchComparesOnlyTheAllowedCandidates)
+{
+	cv::Mat a, b;
+	makeDescriptors(60, 80, 30, a, b, 11);
+	// A repeated texture: b's row 1 copies row 0, so a's copy of row 0
+	// fails the ratio test unguided and passes it when row 1 is not allowed.
+	b.row(0).copyTo(b.row(1));
+	const auto unguided = matchDescriptors(a, b, 0.8);
+	const auto isMatch = [](const std::vector<std::pair<int, int>>& m, int i, int j) {
+		return std::find(m.begin(), m.end(), std::make_pair(i, j)) != m.end();
+	};
+	EXPECT_FALSE(isMatch(unguided, 0, 0) || isMatch(unguided, 0, 1));
+	const vslam::MatchFilter notRowOne = [](int, int j) { return j != 1; };
+	const auto guided = matchDescriptors(a, b, 0.8, &notRowOne);
+	EXPECT_TRUE(isMatch(guided, 0, 0));
+	// Everything else is as the definition has it among the allowed rows:
+	// without row 1 of b, the reference gives the same matches (b's rows
+	// renumbered past it).
+	cv::Mat bWithout;
+	cv::vconcat(b.row(0), b.rowRange(2, b.rows), bWithout);
+	std::vector<std::pair<int, int>> expected;
+	for (auto [i, j] : referenceMatches(a, bWithout, 0.8)) expected.emplace_back(i, j == 0 ? 0 : j + 1);
+	std::sort(expected.begin(), expected.end(), [](auto x, auto y) { return x.second < y.second; });
+	EXPECT_EQ(guided, expected);
+	// A row with a single allowed candidate has no ratio test: no match.
+	const vslam::MatchFilter onlyItsTwin = [](int i, int j) { return i != 0 || j == 0; };
+	EXPECT_FALSE(isMatch(matchDescriptors(a, b, 0.8, &onlyItsTwin), 0, 0));
+	// Null means no guidance.
+	EXPECT_EQ(matchDescriptors(a, b, 0.8, nullptr), unguided);
 }

@@ -113,6 +113,42 @@ std::optional<HeadingFromImages> visualHeadingBetween(const CreationView& view,
 	return out;
 }
 
+/** Which features of the newest view (rows of `newest`) may match which
+ * of view v: those within `bandPx` of the epipolar line the odometry's
+ * relative pose (X_v = R X_newest + t) predicts. */
+MatchFilter epipolarBand(const PinholeCamera& cam, const std::vector<cv::Point2f>& newest,
+	const std::vector<cv::Point2f>& view, const ba::CameraPose& vFromNewest, double bandPx)
+{
+	const double tn = vFromNewest.t.norm();
+	if (!(tn > 0)) return [](int, int) { return true; };  // no baseline: no epipolar geometry
+	Eigen::Matrix3d tx;
+	const Eigen::Vector3d t = vFromNewest.t / tn;
+	tx << 0, -t.z(), t.y(), t.z(), 0, -t.x(), -t.y(), t.x(), 0;
+	const Eigen::Matrix3d E = tx * vFromNewest.R;
+	// Each newest feature's line in view v, normalized so that l . (x, y, 1)
+	// is the distance in pixels (at the mean focal length).
+	const double f = (cam.fx + cam.fy) / 2;
+	std::vector<Eigen::Vector3d> lines;
+	lines.reserve(newest.size());
+	for (const auto& px : newest)
+	{
+		const cv::Point3d r = cam.ray(px);
+		const Eigen::Vector3d l = E * Eigen::Vector3d(r.x, r.y, r.z);
+		const double n = std::hypot(l.x(), l.y());
+		lines.push_back(n > 0 ? Eigen::Vector3d(f * l / n) : Eigen::Vector3d::Zero());
+	}
+	std::vector<Eigen::Vector3d> rays;
+	rays.reserve(view.size());
+	for (const auto& px : view)
+	{
+		const cv::Point3d r = cam.ray(px);
+		rays.emplace_back(r.x, r.y, r.z);
+	}
+	return [lines = std::move(lines), rays = std::move(rays), bandPx](int i, int j) {
+		return std::abs(lines[i].dot(rays[j])) <= bandPx;
+	};
+}
+
 /** The essential matrix between the newest and the oldest view: a better
  * relative rotation than odometry's, and the baseline direction; used
  * only when it agrees with odometry (a wrong solution is worse than none). */
@@ -158,11 +194,22 @@ CreationResult vslam::createLandmark(
 	const CreationView& last = *views.back();
 	const PinholeCamera& cam = last.features.camera;
 
-	// Tracks: features of the newest view matched in every other view.
+	// Tracks: features of the newest view matched in every other view
+	// (near the odometry's epipolar lines with creation_guided_matching).
+	const double bandPx = 3 * (cam.fx + cam.fy) / 2 *
+			std::hypot(std::tan(o.creation_odometry_sigma_deg * M_PI / 180), o.creation_odometry_sigma_rel) +
+		3.0;
 	std::vector<std::map<int, int>> matchOf(n - 1);
 	for (int v = 0; v + 1 < n; v++)
-		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors, o.match_ratio))
+	{
+		const MatchFilter band = o.creation_guided_matching
+			? epipolarBand(cam, last.features.pixels, views[v]->features.pixels,
+				  relativePose(views[v]->cameraPose, last.cameraPose), bandPx)
+			: MatchFilter();
+		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors,
+				 o.match_ratio, o.creation_guided_matching ? &band : nullptr))
 			matchOf[v][a] = b;
+	}
 	std::vector<std::vector<int>> tracks;  // [feature in last, in view 0, ..., in view n-2]
 	for (const auto& [a, b0] : matchOf[0])
 	{

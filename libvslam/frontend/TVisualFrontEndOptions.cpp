@@ -48,6 +48,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	creation_odometry_sigma_rel =
 		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range::positive());
 	creation_visual_heading = readBool(c, s, "creation_visual_heading", creation_visual_heading);
+	creation_guided_matching = readBool(c, s, "creation_guided_matching", creation_guided_matching);
 	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
 	scale_odometry_sigma =
 		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::nonNegative());
@@ -139,6 +140,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
 	c.write(s, "creation_visual_heading", creation_visual_heading, 30, 10,
 		"With heading_change: the measured heading between creation views replaces the odometry's");
+	c.write(s, "creation_guided_matching", creation_guided_matching, 30, 10,
+		"Match creation views near the epipolar lines the odometry predicts");
 	c.write(s, "scale_refinement", scale_refinement, 30, 10, "Refine landmark scales from later sightings and odometry");
 	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (0: [vslam_motion_model] sigma_T)");
 	c.write(s, "scale_pair_min_travel", scale_pair_min_travel, 30, 10, "Travel between paired sightings, at least [m]");

@@ -68,6 +68,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * sequences, but the filter's error does not fall with it, so it is off
 	 * (results.md 9.29). */
 	bool creation_visual_heading = false;
+	/** Match the creation views' features near the epipolar lines the
+	 * odometry predicts (a band of 3 sigma of creation_odometry_sigma_deg
+	 * and creation_odometry_sigma_rel, plus 3 px): the ratio test then
+	 * compares a feature only with the candidates the geometry allows, so
+	 * texture repeated elsewhere in the image no longer vetoes its match. */
+	bool creation_guided_matching = false;
 
 	/** Refine each landmark's scale from its later sightings against the
 	 * odometry between them (LandmarkScaleTrack.h). */
