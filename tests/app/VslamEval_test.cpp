@@ -31,22 +31,36 @@ double valueOf(const std::string& output, const std::string& line, const std::st
 				return std::stod(l.substr(at + key.size() + 2));
 	return NAN;
 }
+
+/** Writes truth.tum and estimate.tum in \a dir: 300 poses at 10 Hz from
+ * t = 100 s, each file's pose given by its function of the time t and of
+ * a = 0.02 rad per pose. Returns the two files as vslam-eval takes them. */
+template <class TruthPose, class EstimatePose>
+std::string writeTruthAndEstimate(const TempDir& dir, TruthPose truthPose, EstimatePose estimatePose)
+{
+	vslam::Trajectory truth, estimate;
+	for (int i = 0; i < 300; i++)
+	{
+		const double t = 100 + 0.1 * i, a = 0.02 * i;
+		truth.push_back({t, truthPose(t, a)});
+		estimate.push_back({t, estimatePose(t, a)});
+	}
+	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
+	vslam::writeTumTrajectory(dir.file("estimate.tum"), estimate);
+	return quoted(dir.file("estimate.tum")) + " " + quoted(dir.file("truth.tum"));
+}
+
+/** The unit circle, driven forwards. */
+mrpt::math::TPose2D onTheCircle(double, double a) { return {std::cos(a), std::sin(a), a + M_PI / 2}; }
 }  // namespace
 
 TEST(VslamEval, AShiftedEstimateHasExactlyItsShiftAsAbsoluteErrorAndNoRelativeError)
 {
 	TempDir dir;
-	vslam::Trajectory truth, shifted;
-	for (int i = 0; i < 300; i++)
-	{
-		const double t = 100 + 0.1 * i, a = 0.02 * i;
-		truth.push_back({t, {std::cos(a), std::sin(a), a + M_PI / 2}});
-		shifted.push_back({t, {std::cos(a) + 0.3, std::sin(a) - 0.4, a + M_PI / 2}});
-	}
-	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
-	vslam::writeTumTrajectory(dir.file("shifted.tum"), shifted);
-	const auto r = runCommand(kBin + "vslam-eval " + quoted(dir.file("shifted.tum")) + " " + quoted(dir.file("truth.tum")) +
-		" --rpe-time 2 --rpe-distance 0.5 --csv " + quoted(dir.file("errors.csv")));
+	const std::string files = writeTruthAndEstimate(dir, onTheCircle, [](double t, double a) {
+		return mrpt::math::TPose2D(std::cos(a) + 0.3, std::sin(a) - 0.4, a + M_PI / 2);
+	});
+	const auto r = runCommand(kBin + "vslam-eval " + files + " --rpe-time 2 --rpe-distance 0.5 --csv " + quoted(dir.file("errors.csv")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NEAR(valueOf(r.output, "ate", "rmse"), 0.5, 1e-4) << r.output;
 	EXPECT_NEAR(valueOf(r.output, "ate", "max"), 0.5, 1e-4) << r.output;
@@ -65,16 +79,9 @@ TEST(VslamEval, FromAndToScoreOnlyThePartOfTheRunBetweenThem)
 	// Exact for its first 20 s, then 0.4 m off: each part scored alone
 	// has exactly its own error, the odometry is windowed the same way.
 	TempDir dir;
-	vslam::Trajectory truth, estimate;
-	for (int i = 0; i < 300; i++)
-	{
-		const double t = 100 + 0.1 * i, a = 0.02 * i;
-		truth.push_back({t, {std::cos(a), std::sin(a), a + M_PI / 2}});
-		estimate.push_back({t, {std::cos(a) + (t >= 120 ? 0.4 : 0), std::sin(a), a + M_PI / 2}});
-	}
-	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
-	vslam::writeTumTrajectory(dir.file("estimate.tum"), estimate);
-	const std::string files = quoted(dir.file("estimate.tum")) + " " + quoted(dir.file("truth.tum"));
+	const std::string files = writeTruthAndEstimate(dir, onTheCircle, [](double t, double a) {
+		return mrpt::math::TPose2D(std::cos(a) + (t >= 120 ? 0.4 : 0), std::sin(a), a + M_PI / 2);
+	});
 	const std::string odometry = " --odometry " + quoted(dir.file("estimate.tum"));
 	const auto first = runCommand(kBin + "vslam-eval " + files + odometry + " --to 20");
 	ASSERT_EQ(first.exitCode, 0) << first.output;
@@ -100,16 +107,10 @@ TEST(VslamEval, AnEstimateTooLargeIsExplainedByTheSimilarityWithItsScale)
 	// error stays; the similarity line gives the scale back (1 / 1.02) and
 	// no error.
 	TempDir dir;
-	vslam::Trajectory truth, large;
-	for (int i = 0; i < 300; i++)
-	{
-		const double t = 100 + 0.1 * i, a = 0.02 * i;
-		truth.push_back({t, {2 * std::cos(a), std::sin(a), a}});
-		large.push_back({t, {2 + 1.02 * (2 * std::cos(a) - 2), 1.02 * std::sin(a), a}});
-	}
-	vslam::writeTumTrajectory(dir.file("truth.tum"), truth);
-	vslam::writeTumTrajectory(dir.file("large.tum"), large);
-	const auto r = runCommand(kBin + "vslam-eval " + quoted(dir.file("large.tum")) + " " + quoted(dir.file("truth.tum")));
+	const std::string files = writeTruthAndEstimate(
+		dir, [](double, double a) { return mrpt::math::TPose2D(2 * std::cos(a), std::sin(a), a); },
+		[](double, double a) { return mrpt::math::TPose2D(2 + 1.02 * (2 * std::cos(a) - 2), 1.02 * std::sin(a), a); });
+	const auto r = runCommand(kBin + "vslam-eval " + files);
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_GT(valueOf(r.output, "ate_se2_aligned", "rmse"), 0.01) << r.output;
 	EXPECT_NEAR(valueOf(r.output, "ate_sim2_aligned", "scale"), 1 / 1.02, 1e-4) << r.output;
