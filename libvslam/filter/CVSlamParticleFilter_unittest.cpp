@@ -271,6 +271,35 @@ TEST(CVSlamParticleFilter, UnexplainedMeasurementsAreRejectedAndCounted)
 	EXPECT_EQ(f.stats().measurementsUsed, 1u);
 }
 
+TEST(CVSlamParticleFilter, ALandmarkUnexplainedWhileLocalizedIsPlacedAgainAfterTheStreak)
+{
+	// Landmark 1 localizes the robot at the origin; landmark 2 is measured
+	// every frame 1 m from where the map has it. With
+	// reinit_after_unexplained = 3 its third unexplained measurement places
+	// it again from the measurement; with 0 it stays and every such
+	// measurement is only rejected.
+	for (const uint32_t limit : {3u, 0u})
+	{
+		auto o = manyParticles(100);
+		o.landmarks.reinit_after_unexplained = limit;
+		mrpt::random::getRandomGenerator().randomize(13);
+		CVSlamParticleFilter f(o);
+		const se2::Pose l1{2, 0, 0}, mapped{0, 2, M_PI / 2}, measured{0, 3, M_PI / 2};
+		f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark(l1)},
+					   {{LandmarkKind::Pose, 2}, poseLandmark(mapped)}});
+		for (int t = 1; t <= 5; t++)
+		{
+			f.processFrame(frame(t, {poseMeasurement(1, l1), poseMeasurement(2, measured)}));
+			const Eigen::Vector3d l2 = f.particle(0).bank[1].mean;
+			const bool placedAgain = limit > 0 && t >= static_cast<int>(limit);
+			EXPECT_NEAR(l2.y(), placedAgain ? measured.y : mapped.y, 0.05) << "limit " << limit << ", frame " << t;
+			EXPECT_EQ(f.stats().landmarksReinitialized, placedAgain ? 1u : 0u) << "limit " << limit << ", frame " << t;
+		}
+		EXPECT_EQ(f.stats().rejectedUnexplained, limit > 0 ? 3u : 5u) << limit;
+		EXPECT_NEAR(f.meanPose().y, 0, 0.05) << limit;  // landmark 1 keeps the robot where it is
+	}
+}
+
 TEST(CVSlamParticleFilter, SequentialProcessingUpdatesOncePerMeasurement)
 {
 	auto o = manyParticles(100);
