@@ -68,8 +68,10 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 	double init_std_xy = 0.03;  //!< m
 	double init_std_phi = 1.0 * M_PI / 180;  //!< rad (INI: degrees)
 	/** Re-initialize a landmark after this many consecutive measurements
-	 * that no particle explains while the robot is localized (0: never). */
-	uint32_t reinit_after_unexplained = 3;
+	 * that no particle explains while the robot is localized (0: never).
+	 * Off by default: a landmark recognized falsely but consistently would be
+	 * moved to where the false recognitions put it (results.md 9.35-9.36). */
+	uint32_t reinit_after_unexplained = 0;
 	/** Add the particle cloud's pose covariance at creation (propagated to
 	 * the landmark) to a new landmark's covariance. Off (FastSLAM proper):
 	 * the particles' own poses already represent where the robot was, and a
