@@ -21,6 +21,7 @@ void CMeasurementExtractor::TVisualOptions::loadFromConfigFile(
 		readDouble(c, s, "time_jitter_std", time_jitter_std, Range::nonNegative());
 	predicted_cov_scale =
 		readDouble(c, s, "predicted_cov_scale", predicted_cov_scale, Range::nonNegative());
+	scale_std = readDouble(c, s, "scale_std", scale_std, Range::closed(0, 1));
 }
 
 void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
@@ -34,6 +35,8 @@ void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
 		"Timestamp uncertainty of images vs odometry [s]: noise grows with speed and turn rate");
 	c.write(s, "predicted_cov_scale", predicted_cov_scale, 25, 12,
 		"Add this factor^2 x each measurement's predicted covariance to Sigma_vis (0: Sigma_vis alone, the paper)");
+	c.write(s, "scale_std", scale_std, 25, 12,
+		"Std of the landmark's scale as a share: adds scale_std^2 t t^T to the (dx, dy) noise (0: none, the paper)");
 }
 
 void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
@@ -144,6 +147,11 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 					throw InputError("visual measurement of landmark " + std::to_string(v->landmarkID) +
 						" has a predicted covariance that is not finite or has a negative variance");
 				m.R += visual.predicted_cov_scale * visual.predicted_cov_scale * P;
+			}
+			if (visual.scale_std > 0)
+			{
+				const Eigen::Vector2d t(v->relPose.x(), v->relPose.y());
+				m.R.topLeftCorner<2, 2>() += visual.scale_std * visual.scale_std * t * t.transpose();
 			}
 			if (!m.kidnapEvidence) m.R *= std::pow(preFilter.options.above_evidence_noise_scale, 2);
 			out.measurements.push_back(std::move(m));

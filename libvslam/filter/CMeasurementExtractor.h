@@ -83,6 +83,12 @@ class CMeasurementExtractor
 		 * pixel error, not the landmark's own, hence a factor. 0: Sigma_vis
 		 * alone (the paper). */
 		double predicted_cov_scale = 0;
+		/** A landmark's scale is known only to a share (the odometry
+		 * baseline it was built from), and a scale error s moves the
+		 * measured translation t by s t: this std of s adds
+		 * scale_std^2 t t^T to the (dx, dy) noise, so measurements from
+		 * afar count for less. 0: not modelled (the paper). */
+		double scale_std = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
