@@ -832,3 +832,57 @@ TEST(LandmarkPipeline, GuidedMatchingBuildsALandmarkFromARepeatedTexture)
 	EXPECT_LT(relativeErrors[relativeErrors.size() / 2], 0.03);
 	EXPECT_LT(relativeErrors[relativeErrors.size() * 9 / 10], 0.07);
 }
+
+TEST(LandmarkPipeline, GuidedRecognitionTakesBackThePointsALookAlikeFeatureTook)
+{
+	// Every other texture element in view appears a second time elsewhere in
+	// the image (a look-alike feature, as on a repeated pattern). Unguided,
+	// each landmark point keeps the nearer of its two features in descriptor
+	// space, the wrong one half the time: an outlier, its point lost to the
+	// pose. Sought near where the accepted pose projects it, the true feature
+	// comes back.
+	const mrpt::poses::CPose2D query(1.0, 0.3, 5 * kDeg);
+	const mrpt::poses::CPose2D truth = mrpt::poses::CPose2D() - query;
+	TVisualFrontEndOptions unguided;
+	TVisualFrontEndOptions guided = unguided;
+	guided.recognition_guided_radius_px = 4;
+	int inView = 0, inliersUnguided = 0, inliersGuided = 0;
+	for (uint32_t seed = 1; seed <= 10; seed++)
+	{
+		std::mt19937 rng(seed);
+		const Scene scene = makeScene(rng, 300);
+		VisualLandmarkModel lm;  // the landmark frame is the world's
+		lm.id = 1;
+		for (const auto& p : scene.points) lm.points.emplace_back(p);
+		lm.descriptors = scene.descriptors.clone();
+		ImageFeatures image = view(scene, query, rng, 0.5);
+		const int n = static_cast<int>(image.size());
+		std::normal_distribution<double> g;
+		std::uniform_real_distribution<float> u(0, 1);
+		for (int i = 0; i < n; i += 2)
+		{
+			// The look-alike: the same texture element, another pixel noise.
+			const int row = static_cast<int>(scenePointOf(scene, image.descriptors.row(i)));
+			cv::Mat copy = scene.descriptors.row(row).clone();
+			for (int d = 0; d < 128; d++) copy.at<float>(0, d) += static_cast<float>(2 * g(rng));
+			image.pixels.emplace_back(640 * u(rng), 480 * u(rng));
+			image.descriptors.push_back(copy);
+		}
+		const auto a = recognizeLandmark(image, lm, kMount, unguided);
+		const auto b = recognizeLandmark(image, lm, kMount, guided);
+		ASSERT_TRUE(a && b) << "seed " << seed;
+		inView += n;
+		inliersUnguided += a->NPoints;
+		inliersGuided += b->NPoints;
+		EXPECT_GE(b->NPoints, a->NPoints) << "seed " << seed;
+		EXPECT_LT((b->landmarkInRobot - truth).norm(), 0.02) << "seed " << seed;
+		EXPECT_LT(std::abs(mrpt::math::wrapToPi(b->landmarkInRobot.phi() - truth.phi())), 0.2 * kDeg) << "seed " << seed;
+		EXPECT_LE(b->stdPosition, a->stdPosition) << "seed " << seed;
+	}
+	// About a quarter of the points in view go to look-alikes unguided; the
+	// search takes back nearly all.
+	EXPECT_LT(inliersUnguided, 0.85 * inView);
+	EXPECT_GT(inliersGuided, 0.95 * inView);
+	std::cout << "inliers of " << inView << " points in view: " << inliersUnguided << " unguided, " << inliersGuided
+			  << " guided\n";
+}

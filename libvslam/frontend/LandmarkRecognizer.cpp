@@ -3,6 +3,7 @@
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/PlanarPose.h>
 #include <libvslam/frontend/PoseAmbiguity.h>
+#include <libvslam/frontend/ProjectionMatching.h>
 #include <libvslam/frontend/RansacIterations.h>
 #include <libvslam/frontend/StructureUncertainty.h>
 #include <mrpt/math/CMatrixFixed.h>
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -205,6 +207,79 @@ PoseConsensus refineOnInliers(const std::vector<cv::Point3f>& object, const std:
 	}
 	return best;
 }
+
+/** The 2-D/3-D matches a recognition is solved from: for each, the 3-D
+ * point, the pixel, and the rows of the landmark point and of the image
+ * feature they come from. */
+struct Correspondences
+{
+	std::vector<cv::Point3f> object;
+	std::vector<cv::Point2f> pixels;
+	std::vector<int> point, feature;
+
+	void add(const VisualLandmarkModel& lm, const ImageFeatures& image, int featureRow, int pointRow)
+	{
+		object.push_back(lm.points[pointRow]);
+		pixels.push_back(image.pixels[featureRow]);
+		point.push_back(pointRow);
+		feature.push_back(featureRow);
+	}
+	size_t size() const { return object.size(); }
+};
+
+/** recognition_guided_radius_px: the landmark points the pose `fit`
+ * (rvec, tvec) leaves unmatched are sought near where it projects them
+ * (ProjectionMatching.h), no farther in descriptor space than the farthest
+ * of fit's inliers; the pose is refined on the inliers and those matches,
+ * and the inliers are counted again among all matches. */
+PoseConsensus extendByProjection(const ImageFeatures& image, const cv::Mat& query, const VisualLandmarkModel& lm,
+	const cv::Mat& landmarkDescriptors, const cv::Mat& K, const TVisualFrontEndOptions& o, Correspondences& c,
+	const PoseConsensus& fit, cv::Mat& rvec, cv::Mat& tvec)
+{
+	std::vector<bool> pointTaken(lm.points.size(), false), featureTaken(image.size(), false);
+	double farthest = 0;
+	for (int i : fit.inliers)
+	{
+		pointTaken[c.point[i]] = featureTaken[c.feature[i]] = true;
+		farthest = std::max(farthest, cv::norm(query.row(c.feature[i]), landmarkDescriptors.row(c.point[i])));
+	}
+	cv::Mat R;
+	cv::Rodrigues(rvec, R);
+	std::vector<bool> inFront(lm.points.size());
+	for (size_t j = 0; j < lm.points.size(); j++)
+	{
+		const cv::Mat X = (cv::Mat_<double>(3, 1) << lm.points[j].x, lm.points[j].y, lm.points[j].z);
+		inFront[j] = cv::Mat(R.row(2) * X).at<double>(0) + tvec.at<double>(2) > 0;
+	}
+	std::vector<cv::Point2f> projected;
+	cv::projectPoints(lm.points, rvec, tvec, K, cv::noArray(), projected);
+	const auto found = matchByProjection(projected, inFront, landmarkDescriptors, pointTaken, image.pixels, query,
+		featureTaken, {o.recognition_guided_radius_px, o.match_ratio, farthest});
+	if (found.empty()) return fit;
+	// The new set: fit's inliers, the other matches but those whose point or
+	// feature the search gave another partner, and the search's matches.
+	for (const auto& [featureRow, pointRow] : found) pointTaken[pointRow] = featureTaken[featureRow] = true;
+	Correspondences extended;
+	std::vector<bool> isInlier(c.size(), false);
+	for (int i : fit.inliers)
+	{
+		isInlier[i] = true;
+		extended.add(lm, image, c.feature[i], c.point[i]);
+	}
+	for (size_t i = 0; i < c.size(); i++)
+		if (!isInlier[i] && !pointTaken[c.point[i]] && !featureTaken[c.feature[i]])
+			extended.add(lm, image, c.feature[i], c.point[i]);
+	std::vector<int> refineOn(fit.inliers.size());
+	std::iota(refineOn.begin(), refineOn.end(), 0);
+	for (const auto& [featureRow, pointRow] : found)
+	{
+		refineOn.push_back(static_cast<int>(extended.size()));
+		extended.add(lm, image, featureRow, pointRow);
+	}
+	c = std::move(extended);
+	cv::solvePnPRefineLM(subset(c.object, refineOn), subset(c.pixels, refineOn), K, cv::noArray(), rvec, tvec);
+	return consensusOf(c.object, c.pixels, K, rvec, tvec, o.recognition_ransac_px);
+}
 }  // namespace
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
@@ -212,31 +287,36 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const TVisualFrontEndOptions& o)
 {
 	const cv::Mat& query = image.codes.empty() ? image.descriptors : image.codes;
-	const auto matches = matchDescriptors(query, DescriptorCodec::decode(lm.descriptors), o.match_ratio);
+	const cv::Mat landmarkDescriptors = DescriptorCodec::decode(lm.descriptors);
+	const auto matches = matchDescriptors(query, landmarkDescriptors, o.match_ratio);
 	if (static_cast<int>(matches.size()) < o.recognition_min_inliers) return std::nullopt;
-	std::vector<cv::Point3f> object;
-	std::vector<cv::Point2f> pixels;
-	for (const auto& [qi, pi] : matches)
-	{
-		object.push_back(lm.points[pi]);
-		pixels.push_back(image.pixels[qi]);
-	}
+	Correspondences c;
+	for (const auto& [qi, pi] : matches) c.add(lm, image, qi, pi);
 	const cv::Mat K(image.camera.K());
 	cv::Mat rvec, tvec;
 	std::vector<int> inliers;
-	const bool found = robustPnP(object, pixels, K, o, rvec, tvec, inliers);
+	const bool found = robustPnP(c.object, c.pixels, K, o, rvec, tvec, inliers);
 	const int leastToRefine = o.recognition_local_optimization ? kRansacSampleSize : o.recognition_min_inliers;
 	if (!found || static_cast<int>(inliers.size()) < leastToRefine) return std::nullopt;
-	const PoseConsensus fit = refineOnInliers(object, pixels, K, o, inliers, rvec, tvec);
+	PoseConsensus fit = refineOnInliers(c.object, c.pixels, K, o, inliers, rvec, tvec);
+	if (!enoughInliers(static_cast<int>(fit.inliers.size()), static_cast<int>(matches.size()), o)) return std::nullopt;
+	// Only a recognition already accepted is extended: the search adds
+	// matches to a pose, never a pose to the image.
+	if (o.recognition_guided_radius_px > 0)
+	{
+		fit = extendByProjection(image, query, lm, landmarkDescriptors, K, o, c, fit, rvec, tvec);
+		if (!enoughInliers(static_cast<int>(fit.inliers.size()), static_cast<int>(c.size()), o)) return std::nullopt;
+	}
+	const std::vector<cv::Point3f>& object = c.object;
+	const std::vector<cv::Point2f>& pixels = c.pixels;
 	const std::vector<int>& refinedInliers = fit.inliers;
 	const int n = static_cast<int>(refinedInliers.size());
-	if (!enoughInliers(n, static_cast<int>(matches.size()), o)) return std::nullopt;
 
 	VisualMeasurement m = measurementFromPnP(rvec, tvec, mount);
 	m.landmarkID = lm.id;
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(fit.sumSquaredPx / n);
-	m.matches = static_cast<int>(matches.size());
+	m.matches = static_cast<int>(c.size());
 	const std::vector<cv::Point3f> inlierObject = subset(object, refinedInliers);
 	const std::vector<cv::Point2f> inlierPixels = subset(pixels, refinedInliers);
 	if (o.recognition_ambiguity_min_gap > 0)
@@ -253,7 +333,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	// tilt by a numerical Jacobian.
 	std::vector<float> inlierDepthStd;  // empty: the points taken as exact
 	if (o.recognition_structure_uncertainty && lm.depthStd.size() == lm.points.size())
-		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[matches[i].second]);
+		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[c.point[i]]);
 	// The landmark was built by this camera on this mount.
 	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
 	Eigen::Matrix<double, 6, 6> poseCov;

@@ -79,6 +79,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readBool(c, s, "recognition_structure_uncertainty", recognition_structure_uncertainty);
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
+	recognition_guided_radius_px =
+		readDouble(c, s, "recognition_guided_radius_px", recognition_guided_radius_px, Range::nonNegative());
 	search_index = readWord("search_index", search_index, {"kdtree", "flann", "bbf"});
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
 	search_flann_trees = readCount("search_flann_trees", search_flann_trees, 1, 16);
@@ -168,6 +170,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Add each point's depth uncertainty from creation to the predicted measurement uncertainty (6-DOF solve)");
 	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
+	c.write(s, "recognition_guided_radius_px", recognition_guided_radius_px, 30, 10,
+		"After an accepted pose, seek its unmatched landmark points among the features this near their projection [px] (0: off)");
 	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks) | bbf (bounded codes compared)");
 	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
 	c.write(s, "search_flann_trees", search_flann_trees, 30, 10, "flann: randomized k-d trees per index level");

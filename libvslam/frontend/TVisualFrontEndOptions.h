@@ -137,6 +137,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * squared reprojection errors in units of the pixel noise variance
 	 * (0: no test). */
 	double recognition_ambiguity_min_gap = 0;
+	/** After an accepted pose: the landmark points it leaves unmatched are
+	 * sought among the image features within this many pixels of where it
+	 * projects them, the pose refined with what is found and the inliers
+	 * counted again (ProjectionMatching.h; 0: no search). */
+	double recognition_guided_radius_px = 0;
 	/** The descriptor index (DescriptorIndex.h): "kdtree" (nanoflann,
 	 * eps-approximate), "flann" (OpenCV FLANN randomized k-d trees,
 	 * bounded checks: cost per query nearly independent of the map size)
