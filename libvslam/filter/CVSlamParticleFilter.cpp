@@ -596,9 +596,9 @@ void CVSlamParticleFilter::updateLoopClosureGraph(
 void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction& c)
 {
 	// Every particle takes the solution's map (with the best particle's
-	// landmark covariances), and the cloud moves rigidly so that the best
-	// particle sits on the solution's current pose: the spread and the
-	// weights stay as they are.
+	// landmark covariances), and the cloud moves rigidly so that its anchor
+	// (cloud_anchor: the best particle, or the weighted mean) sits on the
+	// solution's current pose: the spread and the weights stay as they are.
 	m_stats.loopClosures++;
 	m_stats.loopClosureEdgesLeftOut = c.leftOutEdges;
 	const CVSlamParticle& best = m_particles[bestParticleIndex()].d;
@@ -609,7 +609,9 @@ void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction
 		e.mean = se2::toVector(pose);
 		bank.set(slot, e);
 	}
-	const se2::Pose shift = se2::compose(c.keyframe, se2::inverse(best.pose));
+	const se2::Pose anchor =
+		m_options.loopClosure.cloud_anchor == "mean" ? cloudMean(normalizedLinearWeights()) : best.pose;
+	const se2::Pose shift = se2::compose(c.keyframe, se2::inverse(anchor));
 	for (auto& p : m_particles)
 	{
 		p.d.pose = se2::compose(shift, p.d.pose);

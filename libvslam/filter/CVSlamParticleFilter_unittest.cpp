@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <tests/support/Measurements.h>
 
 #include <Eigen/LU>
 #include <cmath>
+#include <memory>
+#include <string>
 
 using namespace vslam;
 using namespace vslam::testing;
@@ -344,34 +347,89 @@ namespace
 {
 /** Drives a 4 m square whose odometry reports 5 deg too little per corner,
  * creates a landmark at each corner and measures the first again when it is
- * back (40 s later). Returns the filter's position error of the landmark at
- * the far corner. */
-double farCornerErrorAfterALoop(bool loopClosure, TFilterStats& stats)
+ * back (40 s later): the filter right after that loop closure. */
+std::unique_ptr<CVSlamParticleFilter> filterAfterALoop(const TVSlamFilterOptions& o)
+{
+	mrpt::random::getRandomGenerator().randomize(3);
+	auto f = std::make_unique<CVSlamParticleFilter>(o);
+	const double bias = 5 * M_PI / 180;
+	f->processFrame(frame(0, {}, {creation(0)}));
+	for (int corner = 1; corner <= 4; corner++)
+	{
+		for (int k = 0; k < 20; k++) f->addOdometryIncrement({0.2, 0, 0});
+		for (int k = 0; k < 10; k++) f->addOdometryIncrement({0, 0, (M_PI / 2 - bias) / 10});
+		const double t = 10.0 * corner;
+		if (corner < 4)
+		{
+			f->processFrame(frame(t, {}, {creation(corner)}));
+			if (f->ESS() < o.pf.BETA) f->performResampling(o.pf.toMrpt());
+		}
+		else
+			f->processFrame(frame(t, {poseMeasurement(0, {0, 0, 0})}));
+	}
+	return f;
+}
+
+TVSlamFilterOptions squareLoopOptions(bool loopClosure)
 {
 	auto o = manyParticles(200);
 	o.loopClosure.enabled = loopClosure;
 	o.motion.slip_probability = 0;
-	mrpt::random::getRandomGenerator().randomize(3);
-	CVSlamParticleFilter f(o);
-	const double bias = 5 * M_PI / 180;
-	f.processFrame(frame(0, {}, {creation(0)}));
-	for (int corner = 1; corner <= 4; corner++)
-	{
-		for (int k = 0; k < 20; k++) f.addOdometryIncrement({0.2, 0, 0});
-		for (int k = 0; k < 10; k++) f.addOdometryIncrement({0, 0, (M_PI / 2 - bias) / 10});
-		const double t = 10.0 * corner;
-		if (corner < 4)
-			f.processFrame(frame(t, {}, {creation(corner)}));
-		else
-			f.processFrame(frame(t, {poseMeasurement(0, {0, 0, 0})}));
-		if (f.ESS() < o.pf.BETA) f.performResampling(o.pf.toMrpt());
-	}
-	stats = f.stats();
-	const auto slot = f.landmarkIndex().find({LandmarkKind::Pose, 2});
-	const Eigen::Vector3d l = f.particle(f.bestParticleIndex()).bank[*slot].mean;
+	return o;
+}
+
+/** The filter's position error of the landmark at the far corner after
+ * filterAfterALoop. */
+double farCornerErrorAfterALoop(bool loopClosure, TFilterStats& stats)
+{
+	const auto f = filterAfterALoop(squareLoopOptions(loopClosure));
+	stats = f->stats();
+	const auto slot = f->landmarkIndex().find({LandmarkKind::Pose, 2});
+	const Eigen::Vector3d l = f->particle(f->bestParticleIndex()).bank[*slot].mean;
 	return std::hypot(l[0] - 4, l[1] - 4);  // the far corner is at (4, 4)
 }
+
+/** The particles' weighted mean pose (the heading's by its sine and cosine). */
+se2::Pose weightedMeanPose(const CVSlamParticleFilter& f)
+{
+	double sum = 0, x = 0, y = 0, c = 0, s = 0;
+	for (size_t i = 0; i < f.particlesCount(); i++)
+	{
+		const double w = std::exp(f.getW(i));
+		const se2::Pose& p = f.particle(i).pose;
+		sum += w;
+		x += w * p.x;
+		y += w * p.y;
+		c += w * std::cos(p.phi);
+		s += w * std::sin(p.phi);
+	}
+	return {x / sum, y / sum, std::atan2(s, c)};
+}
+
+double poseDistance(const se2::Pose& a, const se2::Pose& b)
+{
+	return std::hypot(a.x - b.x, a.y - b.y) + std::abs(mrpt::math::wrapToPi(a.phi - b.phi));
+}
 }  // namespace
+
+TEST(CVSlamParticleFilter, TheLoopClosureMovesTheCloudsAnchorOntoTheSolutionsCurrentPose)
+{
+	for (const std::string anchor : {"best_particle", "mean"})
+	{
+		auto o = squareLoopOptions(true);
+		o.loopClosure.cloud_anchor = anchor;
+		const auto f = filterAfterALoop(o);
+		ASSERT_EQ(f->stats().loopClosures, 1u);
+		const se2::Pose solution = f->loopClosureGraph()->keyframePath().back().second;
+		const se2::Pose best = f->particle(f->bestParticleIndex()).pose;
+		const se2::Pose mean = weightedMeanPose(*f);
+		// The cloud's spread keeps the two apart, so only the anchor can sit
+		// on the solution.
+		ASSERT_GT(poseDistance(best, mean), 1e-3) << anchor;
+		EXPECT_LT(poseDistance(anchor == "mean" ? mean : best, solution), 1e-9) << anchor;
+		EXPECT_GT(poseDistance(anchor == "mean" ? best : mean, solution), 1e-3) << anchor;
+	}
+}
 
 TEST(CVSlamParticleFilter, ALoopClosureMovesTheMapOntoThePoseGraphSolution)
 {

@@ -31,6 +31,9 @@ void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
 		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
 	max_keyframes = static_cast<uint32_t>(
 		readInt(c, s, "max_keyframes", max_keyframes, Range::closed(0, 1e8)));
+	const std::vector<std::string> anchors{"best_particle", "mean"};
+	cloud_anchor = anchors[readChoice(c, s, "cloud_anchor",
+		static_cast<size_t>(std::find(anchors.begin(), anchors.end(), cloud_anchor) - anchors.begin()), anchors)];
 }
 
 void CLandmarkPoseGraph::TOptions::saveToConfigFile(
@@ -48,6 +51,8 @@ void CLandmarkPoseGraph::TOptions::saveToConfigFile(
 		"Levenberg-Marquardt iterations per optimization");
 	c.write(s, "max_keyframes", static_cast<int>(max_keyframes), 25, 12,
 		"Keyframes kept at most; beyond, every second one of the older half goes (0: no limit)");
+	c.write(s, "cloud_anchor", cloud_anchor, 25, 12,
+		"The pose moved onto the solution's current keyframe, the cloud with it: best_particle | mean");
 }
 
 CLandmarkPoseGraph::CLandmarkPoseGraph(const TOptions& options, const se2::Pose& start)

@@ -39,6 +39,7 @@
 
 #include <optional>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace vslam
@@ -66,6 +67,10 @@ class CLandmarkPoseGraph
 		/** Keyframes kept at most: beyond, the older half is thinned
 		 * (0: no limit). */
 		uint32_t max_keyframes = 2000;
+		/** Which particle pose the cloud is moved onto the solution's current
+		 * keyframe by: "best_particle" (the highest weight) or "mean" (the
+		 * cloud's weighted mean, the online estimate's). */
+		std::string cloud_anchor = "best_particle";
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
