@@ -67,10 +67,12 @@ class CLandmarkPoseGraph
 		/** Keyframes kept at most: beyond, the older half is thinned
 		 * (0: no limit). */
 		uint32_t max_keyframes = 2000;
-		/** Which particle pose the cloud is moved onto the solution's current
-		 * keyframe by: "best_particle" (the highest weight) or "mean" (the
-		 * cloud's weighted mean, the online estimate's). */
-		std::string cloud_anchor = "best_particle";
+		/** Which pose of the cloud is moved onto the solution's current
+		 * keyframe, the cloud rigidly with it: "mean" (the cloud's weighted
+		 * mean, the online estimate's) or "best_particle" (the highest
+		 * weight; before results.md 9.39, which carried the mean past the
+		 * solution by the best particle's offset from it). */
+		std::string cloud_anchor = "mean";
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
