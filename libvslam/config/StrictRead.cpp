@@ -1,9 +1,11 @@
 #include <libvslam/config/StrictRead.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 namespace vslam::config
 {
@@ -170,6 +172,17 @@ size_t readChoice(
 	std::string all;
 	for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
 	fail(section, key, v, "unknown choice, expected one of: " + all);
+}
+
+std::string readWord(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, const std::string& defaultValue,
+	const std::vector<std::string>& names)
+{
+	const auto d = std::find(names.begin(), names.end(), defaultValue);
+	if (d == names.end())
+		throw std::logic_error("readWord: default '" + defaultValue + "' of " + key + " is not a choice");
+	return names[readChoice(cfg, section, key, static_cast<size_t>(d - names.begin()), names)];
 }
 
 }  // namespace vslam::config

@@ -63,6 +63,13 @@ size_t readChoice(
 	const std::string& key, size_t defaultIndex,
 	const std::vector<std::string>& names);
 
+/** Reads one of the given names and returns it (readChoice's rules);
+ * `defaultValue` must be one of them. */
+std::string readWord(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, const std::string& defaultValue,
+	const std::vector<std::string>& names);
+
 /** The raw, trimmed value of a key ("" if absent). */
 std::string rawValue(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,

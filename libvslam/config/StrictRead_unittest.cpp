@@ -32,6 +32,9 @@ TEST(StrictRead, ReadsValidValuesAndKeepsDefaultsForAbsentKeys)
 	EXPECT_EQ(readString(c, "s", "d", ""), "deg");
 	EXPECT_NEAR(readDegreesAsRadians(c, "s", "e", 0), M_PI / 2, 1e-12);
 	EXPECT_EQ(readChoice(c, "s", "d", 0, {"rad", "deg"}), 1u);
+	EXPECT_EQ(readWord(c, "s", "d", "rad", {"rad", "deg"}), "deg");
+	EXPECT_EQ(readWord(c, "s", "absent", "rad", {"rad", "deg"}), "rad");
+	EXPECT_THROW(readWord(c, "s", "absent", "grad", {"rad", "deg"}), std::logic_error);
 }
 
 TEST(StrictRead, AnEmptyValueFollowedByACommentIsEmpty)
@@ -68,4 +71,5 @@ TEST(StrictRead, OutOfRangeValuesSayTheAllowedRange)
 	const std::string e3 =
 		errorOf([&] { readChoice(c, "pf", "ch", 0, {"joint", "sequential"}); });
 	EXPECT_NE(e3.find("joint, sequential"), std::string::npos) << e3;
+	EXPECT_NE(errorOf([&] { readWord(c, "pf", "ch", "joint", {"joint", "sequential"}); }).find("ch"), std::string::npos);
 }

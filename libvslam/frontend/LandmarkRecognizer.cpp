@@ -243,13 +243,13 @@ PoseConsensus extendByProjection(const ImageFeatures& image, const cv::Mat& quer
 		pointTaken[c.point[i]] = featureTaken[c.feature[i]] = true;
 		farthest = std::max(farthest, cv::norm(query.row(c.feature[i]), landmarkDescriptors.row(c.point[i])));
 	}
-	cv::Mat R;
+	cv::Matx33d R;
 	cv::Rodrigues(rvec, R);
 	std::vector<bool> inFront(lm.points.size());
-	for (size_t j = 0; j < lm.points.size(); j++)
+	for (size_t j = 0; j < lm.points.size(); j++)  // the camera frame's depth
 	{
-		const cv::Mat X = (cv::Mat_<double>(3, 1) << lm.points[j].x, lm.points[j].y, lm.points[j].z);
-		inFront[j] = cv::Mat(R.row(2) * X).at<double>(0) + tvec.at<double>(2) > 0;
+		const cv::Point3f& X = lm.points[j];
+		inFront[j] = R(2, 0) * X.x + R(2, 1) * X.y + R(2, 2) * X.z + tvec.at<double>(2) > 0;
 	}
 	std::vector<cv::Point2f> projected;
 	cv::projectPoints(lm.points, rvec, tvec, K, cv::noArray(), projected);

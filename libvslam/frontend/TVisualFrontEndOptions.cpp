@@ -18,10 +18,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	const auto readCount = [&](const char* key, int value, double lo, double hi) {
 		return static_cast<int>(readInt(c, s, key, value, Range::closed(lo, hi)));
 	};
-	const auto readWord = [&](const char* key, const std::string& value, const std::vector<std::string>& kinds) {
-		const size_t def = std::find(kinds.begin(), kinds.end(), value) - kinds.begin();
-		return kinds[readChoice(c, s, key, def, kinds)];
-	};
 	sift_features = readCount("sift_features", sift_features, 0, 100000);
 	sift_contrast_threshold =
 		readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
@@ -69,7 +65,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_ransac_early_stop = readBool(c, s, "recognition_ransac_early_stop", recognition_ransac_early_stop);
 	recognition_local_optimization =
 		readBool(c, s, "recognition_local_optimization", recognition_local_optimization);
-	recognition_ransac = readWord("recognition_ransac", recognition_ransac, {"classic", "usac"});
+	recognition_ransac = readWord(c, s, "recognition_ransac", recognition_ransac, {"classic", "usac"});
 	recognition_planar = readBool(c, s, "recognition_planar", recognition_planar);
 	recognition_max_std_xy =
 		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
@@ -81,13 +77,13 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
 	recognition_guided_radius_px =
 		readDouble(c, s, "recognition_guided_radius_px", recognition_guided_radius_px, Range::nonNegative());
-	search_index = readWord("search_index", search_index, {"kdtree", "flann", "bbf"});
+	search_index = readWord(c, s, "search_index", search_index, {"kdtree", "flann", "bbf"});
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
 	search_flann_trees = readCount("search_flann_trees", search_flann_trees, 1, 16);
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
 	search_bbf_compared = readCount("search_bbf_compared", search_bbf_compared, 1, 100000000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
-	descriptor_storage = readWord("descriptor_storage", descriptor_storage, {"float", "uint8", "uint4", "projected"});
+	descriptor_storage = readWord(c, s, "descriptor_storage", descriptor_storage, {"float", "uint8", "uint4", "projected"});
 	descriptor_dims = readCount("descriptor_dims", descriptor_dims, 4, 128);
 	heading_change = readBool(c, s, "heading_change", heading_change);
 	heading_change_min_inliers = readCount("heading_change_min_inliers", heading_change_min_inliers, 5, 100000);

@@ -31,9 +31,7 @@ void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
 		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
 	max_keyframes = static_cast<uint32_t>(
 		readInt(c, s, "max_keyframes", max_keyframes, Range::closed(0, 1e8)));
-	const std::vector<std::string> anchors{"best_particle", "mean"};
-	cloud_anchor = anchors[readChoice(c, s, "cloud_anchor",
-		static_cast<size_t>(std::find(anchors.begin(), anchors.end(), cloud_anchor) - anchors.begin()), anchors)];
+	cloud_anchor = readWord(c, s, "cloud_anchor", cloud_anchor, {"best_particle", "mean"});
 }
 
 void CLandmarkPoseGraph::TOptions::saveToConfigFile(

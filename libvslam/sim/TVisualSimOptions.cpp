@@ -117,8 +117,7 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	camera_grayscale = readBool(c, s, "camera_grayscale", camera_grayscale);
 	image_noise_std = readDouble(c, s, "image_noise_std", image_noise_std, Range::closed(0, 128));
 	exposure_time = readDouble(c, s, "exposure_time", exposure_time, Range::closed(0, 1));
-	image_format = std::vector<std::string>{"png", "jpg"}[readChoice(
-		c, s, "image_format", image_format == "jpg" ? 1 : 0, {"png", "jpg"})];
+	image_format = readWord(c, s, "image_format", image_format, {"png", "jpg"});
 
 	laser_rays = static_cast<int>(readInt(c, s, "laser_rays", laser_rays, Range::closed(2, 10000)));
 	laser_fov = readDegreesAsRadians(c, s, "laser_fov_deg", laser_fov, {0, 360, false, true});
