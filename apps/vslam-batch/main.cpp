@@ -5,6 +5,9 @@
  *                                          first: for a cluster's job array
  *   vslam-batch BATCH.ini --task ID        run one task (what a listed line does)
  *   vslam-batch BATCH.ini --summary        the summary of what is done so far
+ *
+ * Each also takes --set SECTION.KEY=VALUE (repeatable): a change to the
+ * batch file's keys (loadBatchPlan), carried into every listed command.
  */
 #include <libvslam/batch/BatchPlan.h>
 #include <libvslam/batch/BatchRunner.h>
@@ -23,18 +26,29 @@ const char* kUsage =
 	"       vslam-batch BATCH.ini --list-tasks  print one command per task (renders first)\n"
 	"       vslam-batch BATCH.ini --task ID     run one task\n"
 	"       vslam-batch BATCH.ini --summary     write the summary of the finished runs\n"
+	"Each takes --set SECTION.KEY=VALUE (repeatable) to change a key of the batch file:\n"
+	"  --set 'grid.vslam_prefilter.max_Slope=0.02 0.1'  a grid axis, added or replaced\n"
+	"  --set grid.KEY=                                 a grid axis left out\n"
+	"  --set batch.output_dir=DIR                      (paths relative to the current folder)\n"
 	"The batch file names scenarios, seeds and a grid of vslam settings; see\n"
 	"config_ini/batches/ and doc/experiments.md. Outputs: OUTPUT_DIR/<scenario>/<variation>/seed<N>/,\n"
 	"OUTPUT_DIR/summary.{md,csv} and summary_ate.png.\n"
 	"Exit codes: 0 ok, 1 usage, 2 batch or vslam configuration error, 3 some task failed.\n";
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+/** \a s as one shell word. */
+std::string quoted(const std::string& s)
+{
+	std::string q = "'";
+	for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+	return q + "'";
+}
 }  // namespace
 
 int main(int argc, const char** argv)
 {
 	using namespace vslam::batch;
 	std::string batchFile, taskId, mode = "run";
+	std::vector<std::string> overrides;
 	int jobs = -1;
 	for (int i = 1; i < argc; i++)
 	{
@@ -48,6 +62,8 @@ int main(int argc, const char** argv)
 			mode = a.substr(2);
 		else if (a == "--task" && i + 1 < argc)
 			mode = "task", taskId = argv[++i];
+		else if (a == "--set" && i + 1 < argc)
+			overrides.push_back(argv[++i]);
 		else if (a == "--jobs" && i + 1 < argc)
 		{
 			const std::string n = argv[++i];
@@ -73,16 +89,15 @@ int main(int argc, const char** argv)
 	}
 	try
 	{
-		BatchPlan plan = loadBatchPlan(batchFile);
+		BatchPlan plan = loadBatchPlan(batchFile, overrides);
 		if (jobs > 0) plan.jobs = jobs;
 		const std::string binDir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
 		std::filesystem::create_directories(plan.outputDir);
 		if (mode == "list-tasks")
 		{
-			const std::string self = binDir + "/vslam-batch";
-			for (const auto& t : plan.tasks)
-				std::cout << quoted(self) << " " << quoted(std::filesystem::absolute(batchFile).string()) << " --task "
-						  << quoted(t.id) << "\n";
+			std::string command = quoted(binDir + "/vslam-batch") + " " + quoted(std::filesystem::absolute(batchFile).string());
+			for (const auto& o : plan.overrides) command += " --set " + quoted(o);
+			for (const auto& t : plan.tasks) std::cout << command << " --task " << quoted(t.id) << "\n";
 			return 0;
 		}
 		if (mode == "task")

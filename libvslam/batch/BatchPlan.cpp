@@ -76,12 +76,51 @@ std::vector<int> parseSeeds(const std::string& text, const std::string& where)
 	return seeds;
 }
 
+/** The keys whose value is a path (relative to the batch file's folder). */
+bool isPathKey(const std::string& key)
+{
+	static const std::set<std::string> paths{"output_dir", "vslam_ini", "simul_ini", "rawlog", "ground_truth", "world"};
+	return paths.count(key) > 0;
+}
+
+/** A command-line override with its path, if it gives one, made absolute
+ * against the current folder. */
+config::Override withAbsolutePath(const std::string& text)
+{
+	config::Override o = config::parseOverride(text);
+	if (o.section != "grid" && isPathKey(o.key) && !o.value.empty() && fs::path(o.value).is_relative())
+		o.value = fs::absolute(o.value).lexically_normal().string();
+	return o;
+}
+
 class BatchFile
 {
    public:
-	explicit BatchFile(const std::string& file) : m_file(file)
+	/** \a overrides: "SECTION.KEY=VALUE" with absolute paths; a [grid] key
+	 * without a value drops that axis. */
+	BatchFile(const std::string& file, const std::vector<std::string>& overrides) : m_file(file)
 	{
-		m_cfg = config::parseIniWithOverrides(config::readIniFile(file), {});
+		const std::string text = config::readIniFile(file);
+		std::vector<std::string> fileSections;
+		config::parseIniWithOverrides(text, {}).getAllSections(fileSections);
+		std::vector<config::Override> applied;
+		for (const auto& overrideText : overrides)
+		{
+			config::Override o = config::parseOverride(overrideText);
+			if (o.section != "grid" && std::find(fileSections.begin(), fileSections.end(), o.section) == fileSections.end())
+				throw ConfigError("override '" + overrideText + "': batch '" + file + "' has no section [" + o.section + "]");
+			if (o.section == "grid" && o.value.empty())
+			{
+				m_droppedGridKeys.insert(o.key);
+				continue;
+			}
+			applied.push_back(o);
+		}
+		m_cfg = config::parseIniWithOverrides(text, applied);
+		for (const auto& key : m_droppedGridKeys)
+			if (m_cfg.read_string("grid", key, "", false).empty())
+				throw ConfigError("override 'grid." + key + "=': no such key in " + where("grid") +
+					" to leave out");
 	}
 
 	std::string where(const std::string& section, const std::string& key = "") const
@@ -126,16 +165,21 @@ class BatchFile
 		return s;
 	}
 
+	/** The keys of \a section, but the grid axes an override dropped. */
 	std::vector<std::string> keys(const std::string& section) const
 	{
 		std::vector<std::string> k;
 		m_cfg.getAllKeys(section, k);
+		if (section == "grid")
+			k.erase(std::remove_if(k.begin(), k.end(), [&](const std::string& key) { return m_droppedGridKeys.count(key) > 0; }),
+				k.end());
 		return k;
 	}
 
    private:
 	std::string m_file;
 	mrpt::config::CConfigFileMemory m_cfg;
+	std::set<std::string> m_droppedGridKeys;
 };
 
 /** Loads the variation's vslam configuration exactly as vslam would: an
@@ -216,12 +260,17 @@ const Task* BatchPlan::find(const std::string& id) const
 	return nullptr;
 }
 
-BatchPlan loadBatchPlan(const std::string& batchFile)
+BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::string>& overrides)
 {
 	if (!fs::is_regular_file(batchFile)) throw ConfigError("no batch file '" + batchFile + "'");
-	const BatchFile f(batchFile);
 	BatchPlan plan;
 	plan.batchFile = batchFile;
+	for (const auto& text : overrides)
+	{
+		const config::Override o = withAbsolutePath(text);
+		plan.overrides.push_back(o.section + "." + o.key + "=" + o.value);
+	}
+	const BatchFile f(batchFile, plan.overrides);
 	for (const auto& section : f.sections())
 		if (section != "batch" && section != "grid" && section.rfind(kScenarioPrefix, 0) != 0)
 			throw ConfigError("batch '" + batchFile + "': unknown section [" + section +

@@ -66,6 +66,9 @@ struct Task
 struct BatchPlan
 {
 	std::string batchFile, outputDir;
+	/** The changes to the batch file's keys it was loaded with (SECTION.KEY=VALUE),
+	 * their relative paths made absolute: a listed task carries them. */
+	std::vector<std::string> overrides;
 	std::vector<int> seeds;
 	int jobs = 0;
 	std::vector<Scenario> scenarios;
@@ -80,6 +83,15 @@ struct BatchPlan
 
 /** Reads and checks a batch file: unknown sections or keys, missing files,
  * bad seeds and every variation's vslam configuration (loaded as vslam
- * would) are ConfigErrors naming the file, section and key. */
-BatchPlan loadBatchPlan(const std::string& batchFile);
+ * would) are ConfigErrors naming the file, section and key.
+ *
+ * \a overrides ("SECTION.KEY=VALUE", vslam-batch --set) change the file's
+ * keys before it is read, so an experiment on a shipped batch needs no
+ * copy of it: "grid.vslam_prefilter.max_Slope=0.02 0.1" adds or replaces a
+ * grid axis, "grid.KEY=" (no value) removes one (it must be in the grid),
+ * "batch.output_dir=DIR" moves the outputs. A relative path given this way
+ * (output_dir, vslam_ini, simul_ini, rawlog, ground_truth, world) is
+ * relative to the current folder, not to the batch file. The same checks
+ * apply: a misspelt section or key is an error naming it. */
+BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::string>& overrides = {});
 }  // namespace vslam::batch

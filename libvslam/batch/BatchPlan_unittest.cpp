@@ -3,6 +3,7 @@
 #include <libvslam/config/ConfigError.h>
 #include <tests/support/TempDir.h>
 
+#include <filesystem>
 #include <fstream>
 
 using namespace vslam::batch;
@@ -112,4 +113,53 @@ TEST(BatchPlan, MistakesAreConfigErrorsNamingTheSectionAndKey)
 	// vslam's own checks, before anything runs: a misspelt key in the grid.
 	expectError("seeds = 1", "[grid]\nvslam_particle_filter.sampleSise = 50 100\n", "sampleSise");
 	expectError("seeds = 1", "[grid]\nvslam_particle_filter.sampleSize = 50 -3\n", "sampleSize=-3");
+}
+
+TEST(BatchPlan, OverridesChangeTheFilesKeysWithoutACopyOfIt)
+{
+	TempDir dir;
+	const std::string file = writeBatch(dir, "seeds = 1 2",
+		"[grid]\nvslam_particle_filter.sampleSize = 50 100\nvslam_mixture_proposal.dual_ratio = 0 0.1\n");
+	// One grid axis replaced, one left out, one added; the seeds and the
+	// output folder changed; a relative path is the caller's, not the file's.
+	const auto plan = loadBatchPlan(file, {"grid.vslam_particle_filter.sampleSize=200", "grid.vslam_mixture_proposal.dual_ratio=",
+		"grid.vslam_kidnap.enabled=false true", "batch.seeds=3", "batch.output_dir=elsewhere/out"});
+	ASSERT_EQ(plan.variations.size(), 2u);
+	EXPECT_EQ(plan.variations[0].label(), "vslam_kidnap.enabled=false, vslam_particle_filter.sampleSize=200");
+	EXPECT_EQ(plan.variations[1].label(), "vslam_kidnap.enabled=true, vslam_particle_filter.sampleSize=200");
+	EXPECT_EQ(plan.seeds, (std::vector<int>{3}));
+	EXPECT_EQ(plan.outputDir, (std::filesystem::current_path() / "elsewhere/out").string());
+	EXPECT_EQ(plan.overrides.back(), "batch.output_dir=" + plan.outputDir);  // what a listed task carries
+	// Without overrides the file is read as it is.
+	EXPECT_EQ(loadBatchPlan(file).variations.size(), 4u);
+	// The same variation, the same folder, whether it comes from the file or
+	// from an override.
+	const auto fromFile = loadBatchPlan(writeBatch(dir, "seeds = 1",
+		"[grid]\nvslam_kidnap.enabled = true\nvslam_particle_filter.sampleSize = 200\n"));
+	EXPECT_EQ(fromFile.variations[0].name, plan.variations[1].name);
+}
+
+TEST(BatchPlan, AnOverrideNamingWhatTheFileDoesNotHaveIsAnError)
+{
+	TempDir dir;
+	const std::string file = writeBatch(dir, "seeds = 1", "[grid]\nvslam_particle_filter.sampleSize = 50 100\n");
+	const auto errorWith = [&](const std::string& override) {
+		try
+		{
+			loadBatchPlan(file, {override});
+		}
+		catch (const vslam::ConfigError& e)
+		{
+			return std::string(e.what());
+		}
+		return std::string();
+	};
+	EXPECT_NE(errorWith("batch.ouput_dir=x").find("[batch] ouput_dir: unknown key (did you mean 'output_dir'?)"),
+		std::string::npos);
+	EXPECT_NE(errorWith("btach.seeds=2").find("has no section [btach]"), std::string::npos);
+	EXPECT_NE(errorWith("scenario:dmeo.set=vslam.max_steps=10").find("has no section [scenario:dmeo]"), std::string::npos);
+	EXPECT_NE(errorWith("grid.vslam_kidnap.enabled=").find("no such key in batch '" + file + "', [grid]"),
+		std::string::npos);
+	EXPECT_NE(errorWith("grid.vslam_particle_filter.sampleSise=50").find("sampleSise"), std::string::npos);
+	EXPECT_NE(errorWith("seeds=2").find("malformed override 'seeds=2'"), std::string::npos);
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 using vslam::testing::contains;
+using vslam::testing::quoted;
 using vslam::testing::readFile;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
@@ -128,6 +129,39 @@ TEST(VslamBatch, ListedTasksRunOneByOneAsOnACluster)
 	const auto unknown = runCommand(kBatch + "'" + batch + "' --task run/demo/v09/seed1");
 	EXPECT_EQ(unknown.exitCode, 1);
 	EXPECT_TRUE(contains(unknown.output, "no task 'run/demo/v09/seed1'")) << unknown.output;
+}
+
+TEST(VslamBatch, OverridesOnTheCommandLineReachEveryListedTask)
+{
+	TempDir dir;
+	const std::string batch = writeBatch(dir, false);
+	// The file's grid axis replaced by another, the outputs moved: a quoted
+	// value with spaces and a quote must survive the listed shell commands.
+	const std::string sets = " --set 'grid.vslam_particle_filter.sampleSize=' --set 'grid.vslam_mixture_proposal.dual_ratio=0.1 0.2'"
+							 " --set " + quoted("batch.output_dir=" + dir.file("other's"));
+	const auto list = runCommand(kBatch + "'" + batch + "' --list-tasks" + sets);
+	ASSERT_EQ(list.exitCode, 0) << list.output;
+	EXPECT_EQ(countLines(list.output, " --task 'run/demo/"), 4u) << list.output;
+	std::istringstream lines(list.output);
+	for (std::string line; std::getline(lines, line);)
+		if (contains(line, "--task"))
+		{
+			ASSERT_EQ(runCommand(line).exitCode, 0) << line;
+		}
+	EXPECT_FALSE(fs::exists(dir.file("out")));
+	const auto summary = runCommand(kBatch + "'" + batch + "' --summary" + sets);
+	ASSERT_EQ(summary.exitCode, 0) << summary.output;
+	const std::string table = readFile(dir.file("other's/summary.md"));
+	EXPECT_EQ(countLines(table, "| demo | vslam_mixture_proposal.dual_ratio=0.1 | 2 / 2 |"), 1u) << table;
+	EXPECT_EQ(countLines(table, "| demo | vslam_mixture_proposal.dual_ratio=0.2 | 2 / 2 |"), 1u) << table;
+	EXPECT_EQ(countLines(table, "sampleSize"), 0u) << table;
+	// A misspelt key is an error naming it, before anything runs; --set
+	// without its value is a usage error.
+	const auto misspelt = runCommand(kBatch + "'" + batch + "' --set batch.seed=3");
+	EXPECT_EQ(misspelt.exitCode, 2) << misspelt.output;
+	EXPECT_TRUE(contains(misspelt.output, "[batch] seed: unknown key (did you mean 'seeds'?)")) << misspelt.output;
+	const auto noValue = runCommand(kBatch + "'" + batch + "' --set");
+	EXPECT_EQ(noValue.exitCode, 1) << noValue.output;
 }
 
 TEST(VslamBatch, AFailedRunIsReportedAndTheOthersGoOn)

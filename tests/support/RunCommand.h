@@ -35,8 +35,14 @@ inline bool contains(const std::string& text, const std::string& part)
 	return text.find(part) != std::string::npos;
 }
 
-/** \a s in single quotes, for a shell command line. */
-inline std::string quoted(const std::string& s) { return "'" + s + "'"; }
+/** \a s in single quotes, for a shell command line (a quote in it closes
+ * the quotes, is escaped and opens them again). */
+inline std::string quoted(const std::string& s)
+{
+	std::string q = "'";
+	for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+	return q + "'";
+}
 
 /** Lines of a file, an unterminated last one included. */
 inline size_t lineCount(const std::string& file)
