@@ -54,6 +54,22 @@ std::string variationDir(const TempDir& dir, const std::string& scenario, const 
 	return "(no variation with " + setting + ")";
 }
 
+/** Runs every command of a --list-tasks output, each a complete shell
+ * command, as a job array would; the number that failed. */
+size_t runListedTasks(const std::string& list)
+{
+	std::istringstream lines(list);
+	size_t failed = 0;
+	for (std::string line; std::getline(lines, line);)
+		if (contains(line, "--task"))
+		{
+			const auto r = runCommand(line);
+			EXPECT_EQ(r.exitCode, 0) << line << "\n" << r.output;
+			failed += r.exitCode != 0;
+		}
+	return failed;
+}
+
 size_t countLines(const std::string& text, const std::string& part)
 {
 	std::istringstream in(text);
@@ -116,13 +132,7 @@ TEST(VslamBatch, ListedTasksRunOneByOneAsOnACluster)
 	const auto list = runCommand(kBatch + "'" + batch + "' --list-tasks");
 	ASSERT_EQ(list.exitCode, 0) << list.output;
 	EXPECT_EQ(countLines(list.output, " --task 'run/demo/"), 4u) << list.output;
-	// Each line is a complete shell command: run them as a job array would.
-	std::istringstream lines(list.output);
-	for (std::string line; std::getline(lines, line);)
-		if (contains(line, "--task"))
-		{
-			ASSERT_EQ(runCommand(line).exitCode, 0) << line;
-		}
+	EXPECT_EQ(runListedTasks(list.output), 0u);
 	const auto summary = runCommand(kBatch + "'" + batch + "' --summary");
 	ASSERT_EQ(summary.exitCode, 0) << summary.output;
 	EXPECT_EQ(countLines(readFile(dir.file("out/summary.md")), "| 2 / 2 |"), 2u);
@@ -142,12 +152,7 @@ TEST(VslamBatch, OverridesOnTheCommandLineReachEveryListedTask)
 	const auto list = runCommand(kBatch + "'" + batch + "' --list-tasks" + sets);
 	ASSERT_EQ(list.exitCode, 0) << list.output;
 	EXPECT_EQ(countLines(list.output, " --task 'run/demo/"), 4u) << list.output;
-	std::istringstream lines(list.output);
-	for (std::string line; std::getline(lines, line);)
-		if (contains(line, "--task"))
-		{
-			ASSERT_EQ(runCommand(line).exitCode, 0) << line;
-		}
+	EXPECT_EQ(runListedTasks(list.output), 0u);
 	EXPECT_FALSE(fs::exists(dir.file("out")));
 	const auto summary = runCommand(kBatch + "'" + batch + "' --summary" + sets);
 	ASSERT_EQ(summary.exitCode, 0) << summary.output;
