@@ -114,6 +114,7 @@ class BatchFile
 				m_droppedGridKeys.insert(o.key);
 				continue;
 			}
+			if (o.section == "grid") m_droppedGridKeys.erase(o.key);  // the later override wins
 			applied.push_back(o);
 		}
 		m_cfg = config::parseIniWithOverrides(text, applied);

@@ -130,8 +130,13 @@ TEST(BatchPlan, OverridesChangeTheFilesKeysWithoutACopyOfIt)
 	EXPECT_EQ(plan.seeds, (std::vector<int>{3}));
 	EXPECT_EQ(plan.outputDir, (std::filesystem::current_path() / "elsewhere/out").string());
 	EXPECT_EQ(plan.overrides.back(), "batch.output_dir=" + plan.outputDir);  // what a listed task carries
-	// Without overrides the file is read as it is.
+	// Without overrides the file is read as it is; of two overrides of one
+	// key the later wins.
 	EXPECT_EQ(loadBatchPlan(file).variations.size(), 4u);
+	const std::string dropped = "grid.vslam_mixture_proposal.dual_ratio=", set = dropped + "0.3";
+	EXPECT_EQ(loadBatchPlan(file, {dropped, set}).variations[0].label(),
+		"vslam_mixture_proposal.dual_ratio=0.3, vslam_particle_filter.sampleSize=50");
+	EXPECT_EQ(loadBatchPlan(file, {set, dropped}).variations[0].label(), "vslam_particle_filter.sampleSize=50");
 	// The same variation, the same folder, whether it comes from the file or
 	// from an override.
 	const auto fromFile = loadBatchPlan(writeBatch(dir, "seeds = 1",
