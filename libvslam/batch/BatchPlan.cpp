@@ -96,19 +96,19 @@ config::Override withAbsolutePath(const std::string& text)
 class BatchFile
 {
    public:
-	/** \a overrides: "SECTION.KEY=VALUE" with absolute paths; a [grid] key
-	 * without a value drops that axis. */
-	BatchFile(const std::string& file, const std::vector<std::string>& overrides) : m_file(file)
+	/** \a overrides: with absolute paths; a [grid] key without a value
+	 * drops that axis. */
+	BatchFile(const std::string& file, const std::vector<config::Override>& overrides) : m_file(file)
 	{
 		const std::string text = config::readIniFile(file);
 		std::vector<std::string> fileSections;
 		config::parseIniWithOverrides(text, {}).getAllSections(fileSections);
 		std::vector<config::Override> applied;
-		for (const auto& overrideText : overrides)
+		for (const auto& o : overrides)
 		{
-			config::Override o = config::parseOverride(overrideText);
 			if (o.section != "grid" && std::find(fileSections.begin(), fileSections.end(), o.section) == fileSections.end())
-				throw ConfigError("override '" + overrideText + "': batch '" + file + "' has no section [" + o.section + "]");
+				throw ConfigError("override '" + o.section + "." + o.key + "=" + o.value + "': batch '" + file +
+					"' has no section [" + o.section + "]");
 			if (o.section == "grid" && o.value.empty())
 			{
 				m_droppedGridKeys.insert(o.key);
@@ -266,12 +266,13 @@ BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::str
 	if (!fs::is_regular_file(batchFile)) throw ConfigError("no batch file '" + batchFile + "'");
 	BatchPlan plan;
 	plan.batchFile = batchFile;
+	std::vector<config::Override> parsed;
 	for (const auto& text : overrides)
 	{
-		const config::Override o = withAbsolutePath(text);
-		plan.overrides.push_back(o.section + "." + o.key + "=" + o.value);
+		parsed.push_back(withAbsolutePath(text));
+		plan.overrides.push_back(parsed.back().section + "." + parsed.back().key + "=" + parsed.back().value);
 	}
-	const BatchFile f(batchFile, plan.overrides);
+	const BatchFile f(batchFile, parsed);
 	for (const auto& section : f.sections())
 		if (section != "batch" && section != "grid" && section.rfind(kScenarioPrefix, 0) != 0)
 			throw ConfigError("batch '" + batchFile + "': unknown section [" + section +
