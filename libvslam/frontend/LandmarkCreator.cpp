@@ -358,7 +358,7 @@ CreationResult vslam::createLandmark(
 	// Keep well-conditioned points only.
 	const auto err = maxErrorOfPoint(problem);
 	// Each point's depth std, only where an option uses it.
-	const bool depthStdUsed = o.creation_max_depth_std > 0 || o.recognition_structure_uncertainty;
+	const bool depthStdUsed = o.creation_max_depth_std > 0 || o.keepsDepthStd();
 	const std::vector<float> depthStd = depthStdUsed
 		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px))
 		: std::vector<float>();
@@ -400,7 +400,7 @@ CreationResult vslam::createLandmark(
 		double xr = 0, yr = 0, zr = 0;
 		mount.composePoint(X.x(), X.y(), X.z(), xr, yr, zr);
 		lm.points.emplace_back(static_cast<float>(xr), static_cast<float>(yr), static_cast<float>(zr));
-		if (o.recognition_structure_uncertainty) lm.depthStd.push_back(depthStd[i]);  // kept only where used
+		if (o.keepsDepthStd()) lm.depthStd.push_back(depthStd[i]);  // kept only where used
 		last.features.descriptors.row(tracks[trackOfPoint[i]][0]).copyTo(lm.descriptors.row(static_cast<int>(r)));
 	}
 	for (const auto& ob : problem.observations)

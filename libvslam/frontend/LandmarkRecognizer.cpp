@@ -6,6 +6,7 @@
 #include <libvslam/frontend/ProjectionMatching.h>
 #include <libvslam/frontend/RansacIterations.h>
 #include <libvslam/frontend/StructureUncertainty.h>
+#include <libvslam/frontend/WeightedPoseRefinement.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/wrap2pi.h>
 
@@ -110,6 +111,8 @@ std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const st
 }
 
 constexpr double kRansacConfidence = 0.999;
+/** A consensus threshold that counts every match. */
+constexpr double kNoThreshold = std::numeric_limits<double>::infinity();
 /** AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side. */
 constexpr int kRansacSampleSize = 4;
 
@@ -311,35 +314,43 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const std::vector<cv::Point2f>& pixels = c.pixels;
 	const std::vector<int>& refinedInliers = fit.inliers;
 	const int n = static_cast<int>(refinedInliers.size());
+	const std::vector<cv::Point3f> inlierObject = subset(object, refinedInliers);
+	const std::vector<cv::Point2f> inlierPixels = subset(pixels, refinedInliers);
+	std::vector<float> inlierDepthStd;  // empty: the points taken as exact
+	if (o.keepsDepthStd() && lm.depthStd.size() == lm.points.size())
+		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[c.point[i]]);
+	// The landmark was built by this camera on this mount.
+	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
+
+	// Predicted uncertainty: the pose covariance of the least-squares fit
+	// over the inliers, carried to (dx, dy, dtheta) and to the tilt by a
+	// numerical Jacobian. With recognition_structure_weighted, the fit
+	// weighted by each point's depth uncertainty, and its covariance;
+	// otherwise the unweighted fit's (pixel noise sigma: their RMS error, at
+	// least kLeastPixelNoisePx; with recognition_structure_uncertainty also
+	// each point's depth uncertainty).
+	Eigen::Matrix<double, 6, 6> poseCov;
+	bool conditioned = o.recognition_structure_weighted && !inlierDepthStd.empty() &&
+		refinePoseWeightedByStructure(inlierObject, inlierPixels, inlierDepthStd, creationCamera, image.camera.K(),
+			kLeastPixelNoisePx, rvec, tvec, poseCov);
+	if (conditioned) fit.sumSquaredPx = consensusOf(inlierObject, inlierPixels, K, rvec, tvec, kNoThreshold).sumSquaredPx;
 
 	VisualMeasurement m = measurementFromPnP(rvec, tvec, mount);
 	m.landmarkID = lm.id;
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(fit.sumSquaredPx / n);
 	m.matches = static_cast<int>(c.size());
-	const std::vector<cv::Point3f> inlierObject = subset(object, refinedInliers);
-	const std::vector<cv::Point2f> inlierPixels = subset(pixels, refinedInliers);
 	if (o.recognition_ambiguity_min_gap > 0)
 	{
 		const CameraPoseFit pose{cv::Vec3d(rvec), cv::Vec3d(tvec), m.ProjErrRMS};
 		if (const auto other = competingPose(inlierObject, inlierPixels, image.camera.K(), pose))
 			m.ambiguityGap = reprojectionCostGap(pose, *other, inlierObject.size());
 	}
-
-	// Predicted uncertainty: the pose covariance of the least-squares fit
-	// over the inliers (pixel noise sigma: their RMS error, at least
-	// kLeastPixelNoisePx; with recognition_structure_uncertainty also each
-	// point's depth uncertainty), carried to (dx, dy, dtheta) and to the
-	// tilt by a numerical Jacobian.
-	std::vector<float> inlierDepthStd;  // empty: the points taken as exact
-	if (o.recognition_structure_uncertainty && lm.depthStd.size() == lm.points.size())
-		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[c.point[i]]);
-	// The landmark was built by this camera on this mount.
-	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
-	Eigen::Matrix<double, 6, 6> poseCov;
-	const bool conditioned = poseCovariance(
-		poseSolveResiduals(inlierObject, inlierDepthStd, creationCamera, rvec, tvec, image.camera.K()),
-		std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov);
+	if (!conditioned)
+		conditioned = poseCovariance(poseSolveResiduals(inlierObject,
+										 o.recognition_structure_uncertainty ? inlierDepthStd : std::vector<float>(),
+										 creationCamera, rvec, tvec, image.camera.K()),
+			std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov);
 	Eigen::Matrix<double, 3, 6> F;  // d(dx, dy, dtheta) / d(rvec, tvec)
 	Eigen::Matrix<double, 2, 6> G;  // d tilt / d(rvec, tvec)
 	for (int k = 0; conditioned && k < 6; k++)

@@ -73,6 +73,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
 	recognition_structure_uncertainty =
 		readBool(c, s, "recognition_structure_uncertainty", recognition_structure_uncertainty);
+	recognition_structure_weighted = readBool(c, s, "recognition_structure_weighted", recognition_structure_weighted);
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
 	recognition_guided_radius_px =
@@ -164,6 +165,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Reject a measurement whose predicted heading std exceeds this [deg] (0: off)");
 	c.write(s, "recognition_structure_uncertainty", recognition_structure_uncertainty, 30, 10,
 		"Add each point's depth uncertainty from creation to the predicted measurement uncertainty (6-DOF solve)");
+	c.write(s, "recognition_structure_weighted", recognition_structure_weighted, 30, 10,
+		"Refine the pose weighting each inlier by its pixel noise plus its point's depth uncertainty from creation (6-DOF solve)");
 	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
 	c.write(s, "recognition_guided_radius_px", recognition_guided_radius_px, 30, 10,

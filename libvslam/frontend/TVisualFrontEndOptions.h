@@ -131,6 +131,14 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * inliers' pixel error (StructureUncertainty.h; 6-DOF solve only).
 	 * Landmarks then keep each point's depth std (4 bytes per point). */
 	bool recognition_structure_uncertainty = false;
+	/** Refine the pose with each inlier weighted by its pixel noise plus its
+	 * point's depth uncertainty from creation (generalized least squares,
+	 * WeightedPoseRefinement.h); the predicted uncertainty is then that
+	 * fit's, the structure included. Landmarks keep each point's depth std
+	 * (4 bytes per point). */
+	bool recognition_structure_weighted = false;
+	/** Whether landmarks keep each point's depth std. */
+	bool keepsDepthStd() const { return recognition_structure_uncertainty || recognition_structure_weighted; }
 	/** A recognition is kept only if its pose explains the inliers better
 	 * than the best competing pose (the mirror pose of a plane seen small,
 	 * PoseAmbiguity.h) by at least this much: the difference of their
