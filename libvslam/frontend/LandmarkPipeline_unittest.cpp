@@ -542,22 +542,34 @@ std::array<double, 6> scatterOfRebuiltLandmarks(
 	EXPECT_GE(scatter.n, trials * 9 / 10);
 	return scatter.result();
 }
-}  // namespace
 
-TEST(LandmarkRecognizer, StructureUncertaintyPredictsTheScatterOfLandmarksBuiltFromAShortBaseline)
+/** scatterOfRebuiltLandmarks for 60 landmarks of one 300-point scene seen
+ * from 1 m to the side and turned 20 deg, with `first` and then `second`
+ * options; both printed. */
+std::pair<std::array<double, 6>, std::array<double, 6>> scattersFromTheSide(
+	const TVisualFrontEndOptions& first, const char* firstName, const TVisualFrontEndOptions& second,
+	const char* secondName)
 {
 	std::mt19937 rng(12);
 	const Scene wide = makeScene(rng, 300);
 	const mrpt::poses::CPose2D aside(1.0, 1.0, -20 * kDeg);
+	const auto a = scatterOfRebuiltLandmarks(wide, aside, 60, first);
+	const auto b = scatterOfRebuiltLandmarks(wide, aside, 60, second);
+	std::printf("position rms / predicted std: %.4f / %.4f m (%s), %.4f / %.4f m (%s)\n"
+				"heading rms / predicted std: %.3f / %.3f deg (%s), %.3f / %.3f deg (%s)\n",
+		a[0], a[1], firstName, b[0], b[1], secondName, a[2] / kDeg, a[3] / kDeg, firstName, b[2] / kDeg, b[3] / kDeg,
+		secondName);
+	return {a, b};
+}
+}  // namespace
+
+TEST(LandmarkRecognizer, StructureUncertaintyPredictsTheScatterOfLandmarksBuiltFromAShortBaseline)
+{
 	TVisualFrontEndOptions o;
 	o.recognition_structure_weighted = false;  // the prediction of the unweighted fit
-	const auto pixelsOnly = scatterOfRebuiltLandmarks(wide, aside, 60, o);
-	o.recognition_structure_uncertainty = true;
-	const auto withStructure = scatterOfRebuiltLandmarks(wide, aside, 60, o);
-	std::printf("position rms / predicted std: %.4f / %.4f m (pixels only), %.4f / %.4f m (with structure)\n"
-				"heading rms / predicted std: %.3f / %.3f deg (pixels only), %.3f / %.3f deg (with structure)\n",
-		pixelsOnly[0], pixelsOnly[1], withStructure[0], withStructure[1], pixelsOnly[2] / kDeg, pixelsOnly[3] / kDeg,
-		withStructure[2] / kDeg, withStructure[3] / kDeg);
+	TVisualFrontEndOptions structure = o;
+	structure.recognition_structure_uncertainty = true;
+	const auto [pixelsOnly, withStructure] = scattersFromTheSide(o, "pixels only", structure, "with structure");
 	// The option changes the prediction, not the measurement.
 	EXPECT_DOUBLE_EQ(pixelsOnly[0], withStructure[0]);
 	EXPECT_DOUBLE_EQ(pixelsOnly[2], withStructure[2]);
@@ -575,18 +587,11 @@ TEST(LandmarkRecognizer, StructureUncertaintyPredictsTheScatterOfLandmarksBuiltF
 
 TEST(LandmarkRecognizer, StructureWeightedPoseFitsLandmarksBuiltFromAShortBaselineCloserFromTheSide)
 {
-	std::mt19937 rng(12);
-	const Scene wide = makeScene(rng, 300);
-	const mrpt::poses::CPose2D aside(1.0, 1.0, -20 * kDeg);
 	TVisualFrontEndOptions o;
 	o.recognition_structure_weighted = false;
-	const auto unweighted = scatterOfRebuiltLandmarks(wide, aside, 60, o);
-	o.recognition_structure_weighted = true;
-	const auto weighted = scatterOfRebuiltLandmarks(wide, aside, 60, o);
-	std::printf("position rms / predicted std: %.4f / %.4f m (unweighted), %.4f / %.4f m (weighted)\n"
-				"heading rms / predicted std: %.3f / %.3f deg (unweighted), %.3f / %.3f deg (weighted)\n",
-		unweighted[0], unweighted[1], weighted[0], weighted[1], unweighted[2] / kDeg, unweighted[3] / kDeg,
-		weighted[2] / kDeg, weighted[3] / kDeg);
+	TVisualFrontEndOptions weightedFit = o;
+	weightedFit.recognition_structure_weighted = true;
+	const auto [unweighted, weighted] = scattersFromTheSide(o, "unweighted", weightedFit, "weighted");
 	// The same landmarks (the same draws), measured closer to the truth...
 	EXPECT_LT(weighted[0], 0.8 * unweighted[0]);
 	EXPECT_LT(weighted[2], 0.8 * unweighted[2]);
