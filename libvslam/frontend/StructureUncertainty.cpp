@@ -35,8 +35,8 @@ std::vector<PoseSolveResidual> poseSolveResiduals(const std::vector<cv::Point3f>
 	const cv::Mat& tvec, const cv::Matx33d& K)
 {
 	cv::Mat jacobian;
-	std::vector<cv::Point2f> unused;
-	cv::projectPoints(points, rvec, tvec, cv::Mat(K), cv::noArray(), unused, jacobian);
+	std::vector<cv::Point2f> projected;
+	cv::projectPoints(points, rvec, tvec, cv::Mat(K), cv::noArray(), projected, jacobian);
 	cv::Mat Rcv;
 	cv::Rodrigues(rvec, Rcv);
 	Eigen::Matrix3d R;
@@ -46,6 +46,7 @@ std::vector<PoseSolveResidual> poseSolveResiduals(const std::vector<cv::Point3f>
 	std::vector<PoseSolveResidual> residuals(points.size());
 	for (size_t k = 0; k < points.size(); k++)
 	{
+		residuals[k].projectedPx = {projected[k].x, projected[k].y};
 		for (int axis = 0; axis < 2; axis++)
 			for (int c = 0; c < 6; c++)  // d/drvec (3), d/dtvec (3)
 				residuals[k].jacobianWrtPose(axis, c) = jacobian.at<double>(static_cast<int>(2 * k) + axis, c);

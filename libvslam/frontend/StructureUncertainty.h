@@ -43,6 +43,7 @@ struct PoseSolveResidual
 {
 	Eigen::Matrix<double, 2, 6> jacobianWrtPose;
 	Eigen::Matrix2d structureCovariancePx = Eigen::Matrix2d::Zero();
+	Eigen::Vector2d projectedPx = Eigen::Vector2d::Zero();  //!< where the pose projects the point
 };
 
 /** The residuals of a PnP pose X_cam = R(rvec) X + tvec (OpenCV's

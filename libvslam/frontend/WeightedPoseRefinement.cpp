@@ -31,6 +31,16 @@ std::vector<Eigen::Vector2d> reprojectionErrors(const std::vector<cv::Point3f>& 
 	return r;
 }
 
+/** The reprojection errors at the pose the residuals were taken at. */
+std::vector<Eigen::Vector2d> reprojectionErrors(
+	const std::vector<PoseSolveResidual>& residuals, const std::vector<cv::Point2f>& pixels)
+{
+	std::vector<Eigen::Vector2d> r(residuals.size());
+	for (size_t k = 0; k < residuals.size(); k++)
+		r[k] = residuals[k].projectedPx - Eigen::Vector2d(pixels[k].x, pixels[k].y);
+	return r;
+}
+
 /** The weights' inverses (sigma^2 I + structure) at one pose, held fixed
  * while a step is taken and judged. */
 std::vector<Eigen::Matrix2d> inverseWeights(const std::vector<PoseSolveResidual>& residuals, double sigmaPx)
@@ -78,7 +88,7 @@ bool refinePoseWeightedByStructure(const std::vector<cv::Point3f>& points, const
 		const auto residuals = poseSolveResiduals(points, relativeDepthStd, rayOrigin, r, t, K);
 		const auto information = inverseWeights(residuals, sigmaPx);
 		const NormalEquations n =
-			normalEquations(residuals, reprojectionErrors(points, pixels, K, r, t), information);
+			normalEquations(residuals, reprojectionErrors(residuals, pixels), information);
 		const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(n.H);
 		if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return false;
 		const Eigen::Matrix<double, 6, 1> delta = -ldlt.solve(n.g);
@@ -104,8 +114,8 @@ bool refinePoseWeightedByStructure(const std::vector<cv::Point3f>& points, const
 		if (!lowered) break;
 	}
 	const auto residuals = poseSolveResiduals(points, relativeDepthStd, rayOrigin, r, t, K);
-	const NormalEquations n = normalEquations(residuals, reprojectionErrors(points, pixels, K, r, t),
-		inverseWeights(residuals, sigmaPx));
+	const NormalEquations n =
+		normalEquations(residuals, reprojectionErrors(residuals, pixels), inverseWeights(residuals, sigmaPx));
 	const Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(n.H);
 	if (!lu.isInvertible()) return false;
 	const double dof = 2.0 * static_cast<double>(points.size()) - 6;
