@@ -107,8 +107,7 @@ class BatchFile
 		for (const auto& o : overrides)
 		{
 			if (o.section != "grid" && std::find(fileSections.begin(), fileSections.end(), o.section) == fileSections.end())
-				throw ConfigError("override '" + o.section + "." + o.key + "=" + o.value + "': batch '" + file +
-					"' has no section [" + o.section + "]");
+				throw ConfigError("override '" + o.text() + "': batch '" + file + "' has no section [" + o.section + "]");
 			if (o.section == "grid" && o.value.empty())
 			{
 				m_droppedGridKeys.insert(o.key);
@@ -270,7 +269,7 @@ BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::str
 	for (const auto& text : overrides)
 	{
 		parsed.push_back(withAbsolutePath(text));
-		plan.overrides.push_back(parsed.back().section + "." + parsed.back().key + "=" + parsed.back().value);
+		plan.overrides.push_back(parsed.back().text());
 	}
 	const BatchFile f(batchFile, parsed);
 	for (const auto& section : f.sections())

@@ -12,6 +12,9 @@ namespace vslam::config
 struct Override
 {
 	std::string section, key, value;
+
+	/** "SECTION.KEY=VALUE", as parseOverride() reads it. */
+	std::string text() const { return section + "." + key + "=" + value; }
 };
 
 /** Parses "SECTION.KEY=VALUE"; throws ConfigError on a malformed string. */
