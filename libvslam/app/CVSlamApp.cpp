@@ -381,6 +381,7 @@ int CVSlamApp::run()
 		frontEndSummary.creationRejections = frontEnd->creationRejections();
 		frontEndSummary.poorlyConditioned = frontEnd->poorlyConditionedRecognitions();
 		frontEndSummary.ambiguous = frontEnd->ambiguousRecognitions();
+		frontEndSummary.narrow = frontEnd->narrowRecognitions();
 		summary.frontEnd = frontEndSummary;
 	}
 

@@ -40,8 +40,9 @@ struct RunSummary
 		size_t creationAttempts = 0;
 		std::map<std::string, size_t> creationRejections;  //!< by reason
 		/** Recognitions not reported: predicted too uncertain (or degenerate),
-		 * and ambiguous (recognition_max_std_*, recognition_ambiguity_min_gap). */
-		size_t poorlyConditioned = 0, ambiguous = 0;
+		 * ambiguous, and narrow (recognition_max_std_*,
+		 * recognition_ambiguity_min_gap, recognition_min_spread_deg). */
+		size_t poorlyConditioned = 0, ambiguous = 0, narrow = 0;
 	};
 	std::optional<FrontEnd> frontEnd;
 

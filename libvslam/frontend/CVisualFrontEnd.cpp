@@ -118,6 +118,12 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 			m_ambiguous++;
 			continue;
 		}
+		// ... or from inliers crowded into a thin strip of the image.
+		if (m->inlierSpread < m_options.recognition_min_spread)
+		{
+			m_narrow++;
+			continue;
+		}
 		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		auto o = CObservationVisualLandmark::Create();
 		o->timestamp = obs.timestamp;

@@ -69,6 +69,9 @@ class CVisualFrontEnd
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
 	/** Recognitions dropped for recognition_ambiguity_min_gap. */
 	size_t ambiguousRecognitions() const { return m_ambiguous; }
+	/** Recognitions not reported because their inliers spread too little
+	 * (recognition_min_spread_deg). */
+	size_t narrowRecognitions() const { return m_narrow; }
 	/** Landmark creations tried, and those rejected by reason (the
 	 * creator's reason with its numbers replaced by "N"). */
 	size_t creationAttempts() const { return m_creationAttempts; }
@@ -111,6 +114,7 @@ class CVisualFrontEnd
 	size_t m_images = 0;
 	size_t m_poorlyConditioned = 0;
 	size_t m_ambiguous = 0;
+	size_t m_narrow = 0;
 	size_t m_creationAttempts = 0;
 	std::map<std::string, size_t> m_creationRejections;
 	std::map<std::string, PreviousImage> m_previousImage;  //!< by sensor label

@@ -703,9 +703,10 @@ TEST(LandmarkCreator, DepthStdOfEachPointMatchesItsDepthErrorAndBoundsThePointsK
 
 namespace
 {
-/** The ambiguity gap of a recognition of `scene` (taken as the landmark,
- * its frame the origin) from `query`, with 0.5 px of pixel noise. */
-double ambiguityGapOf(const Scene& scene, const mrpt::poses::CPose2D& query, const TVisualFrontEndOptions& o)
+/** A recognition of `scene` (taken as the landmark, its frame the origin)
+ * from `query`, with 0.5 px of pixel noise. */
+std::optional<VisualMeasurement> recognitionOf(
+	const Scene& scene, const mrpt::poses::CPose2D& query, const TVisualFrontEndOptions& o)
 {
 	std::mt19937 rng(13);
 	VisualLandmarkModel lm;
@@ -714,6 +715,12 @@ double ambiguityGapOf(const Scene& scene, const mrpt::poses::CPose2D& query, con
 	lm.descriptors = scene.descriptors;
 	const auto m = recognizeLandmark(view(scene, query, rng, 0.5), lm, kMount, o);
 	EXPECT_TRUE(m);
+	return m;
+}
+
+double ambiguityGapOf(const Scene& scene, const mrpt::poses::CPose2D& query, const TVisualFrontEndOptions& o)
+{
+	const auto m = recognitionOf(scene, query, o);
 	return m ? m->ambiguityGap : -1;
 }
 }  // namespace
@@ -732,6 +739,31 @@ TEST(LandmarkRecognizer, AFarFlatPatchIsFlaggedAmbiguousAWideSceneIsNot)
 
 	const Scene wide = makeScene(rng, 300);
 	EXPECT_GT(ambiguityGapOf(wide, mrpt::poses::CPose2D(1.2, 0.3, -5 * kDeg), o), 1000);
+}
+
+TEST(LandmarkRecognizer, InlierSpreadIsTheViewingAngleAcrossTheInliersNarrowDirection)
+{
+	std::mt19937 rng(15);
+	// A vertical strip 0.1 m wide and 1.5 m tall on the wall plane x = 3,
+	// seen head-on: the camera (0.1 m ahead of the robot) is 2.9 m from it,
+	// so across the strip the viewing directions' std is the points' std in
+	// y over 2.9 m (about 0.01 rad), plus 0.5 px of noise at f = 400.
+	Scene strip = makeScene(rng, 80);
+	for (auto& p : strip.points) p = cv::Point3d(3, 0.1 * (p.y + 2) / 4 - 0.05, 0.3 + 1.5 * (p.z - 0.2) / 2);
+	double sum = 0, sum2 = 0;
+	for (const auto& p : strip.points) sum += p.y, sum2 += p.y * p.y;
+	const double n = static_cast<double>(strip.points.size());
+	const double expected = std::hypot(std::sqrt(sum2 / n - (sum / n) * (sum / n)) / 2.9, 0.5 / 400);
+	const auto narrow = recognitionOf(strip, mrpt::poses::CPose2D(0, 0, 0), TVisualFrontEndOptions());
+	ASSERT_TRUE(narrow);
+	EXPECT_EQ(narrow->NPoints, 80);
+	EXPECT_NEAR(narrow->inlierSpread, expected, 0.1 * expected);
+	// A scene across the view spreads several times wider.
+	const auto wide = recognitionOf(makeScene(rng, 300), mrpt::poses::CPose2D(1.2, 0.3, -5 * kDeg), TVisualFrontEndOptions());
+	ASSERT_TRUE(wide);
+	std::printf("inlier spread: strip %.4f rad (expected %.4f), wide scene %.4f rad\n", narrow->inlierSpread, expected,
+		wide->inlierSpread);
+	EXPECT_GT(wide->inlierSpread, 5 * narrow->inlierSpread);
 }
 
 namespace

@@ -1,5 +1,6 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
+#include <libvslam/frontend/InlierSpread.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/PlanarPose.h>
 #include <libvslam/frontend/PoseAmbiguity.h>
@@ -340,6 +341,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(fit.sumSquaredPx / n);
 	m.matches = static_cast<int>(c.size());
+	m.inlierSpread = inlierMinorSpread(inlierPixels, image.camera.K());
 	if (o.recognition_ambiguity_min_gap > 0)
 	{
 		const CameraPoseFit pose{cv::Vec3d(rvec), cv::Vec3d(tvec), m.ProjErrRMS};

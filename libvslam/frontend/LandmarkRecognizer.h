@@ -17,6 +17,8 @@
  * A few points on one surface seen small have a second, mirrored pose
  * that reprojects almost as well; with recognition_ambiguity_min_gap the
  * gap between the two is measured (ambiguityGap) for the caller to judge.
+ * So is the inliers' spread over the image (inlierSpread): a pose from
+ * points crowded into a thin strip can be a coherent set of wrong matches.
  * With recognition_planar the 6-DOF solution is refined with the robot on
  * the floor (PlanarPose.h): its pose, inliers, ProjErrRMS and predicted
  * uncertainty are then the planar fit's; Slope stays the 6-DOF solve's.
@@ -61,6 +63,10 @@ struct VisualMeasurement
 	 * competing pose (PoseAmbiguity.h), in pixel noise variances; infinite
 	 * when there is none or recognition_ambiguity_min_gap is 0 (not tested). */
 	double ambiguityGap = std::numeric_limits<double>::infinity();
+	/** How widely the 6-DOF solve's inliers spread over the image: the std
+	 * of their viewing directions across the direction they vary least
+	 * (rad; InlierSpread.h). The caller's recognition_min_spread_deg. */
+	double inlierSpread = 0;
 };
 
 /** The measurement of `landmark` in `image`, if the pose solve finds at

@@ -76,6 +76,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_structure_weighted = readBool(c, s, "recognition_structure_weighted", recognition_structure_weighted);
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
+	recognition_min_spread = readDegreesAsRadians(
+		c, s, "recognition_min_spread_deg", recognition_min_spread, Range::closed(0, 90));
 	recognition_guided_radius_px =
 		readDouble(c, s, "recognition_guided_radius_px", recognition_guided_radius_px, Range::nonNegative());
 	search_index = readWord(c, s, "search_index", search_index, {"kdtree", "flann", "bbf"});
@@ -169,6 +171,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Refine the pose weighting each inlier by its pixel noise plus its point's depth uncertainty from creation (6-DOF solve)");
 	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
+	c.write(s, "recognition_min_spread_deg", recognition_min_spread * 180 / M_PI, 30, 10,
+		"Reject a pose whose inliers spread less than this across the image (std of their viewing directions along their minor axis) [deg] (0: off)");
 	c.write(s, "recognition_guided_radius_px", recognition_guided_radius_px, 30, 10,
 		"After an accepted pose, seek its unmatched landmark points among the features this near their projection [px] (0: off)");
 	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks) | bbf (bounded codes compared)");

@@ -145,6 +145,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * squared reprojection errors in units of the pixel noise variance
 	 * (0: no test). */
 	double recognition_ambiguity_min_gap = 0;
+	/** A recognition is kept only if its inliers spread over at least this
+	 * angle across the image: the std of their viewing directions along the
+	 * direction they vary least (InlierSpread.h). Points in a thin strip
+	 * constrain the pose poorly, and on a self-similar texture a few wrong
+	 * matches there can agree on a wrong pose (0: no test). */
+	double recognition_min_spread = 0;  //!< rad (INI: degrees)
 	/** After an accepted pose: the landmark points it leaves unmatched are
 	 * sought among the image features within this many pixels of where it
 	 * projects them, the pose refined with what is found and the inliers
