@@ -25,6 +25,7 @@ struct LapsResult
 	std::vector<double> translationErrors, headingErrors;
 	std::vector<std::string> rows;  //!< every output, for determinism
 	size_t landmarksInDatabase = 0, pruned = 0;
+	size_t narrow = 0;  //!< recognitions not reported for recognition_min_spread_deg
 	/** Per landmark, measured over true range of each measurement from
 	 * beyond 0.5 m in the last lap: how far off the landmark's scale is. */
 	std::map<int64_t, std::vector<double>> rangeRatiosLastLap;
@@ -89,6 +90,7 @@ LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double 
 		}
 	}
 	run.landmarksInDatabase = fe.database().size();
+	run.narrow = fe.narrowRecognitions();
 	return run;
 }
 
@@ -171,6 +173,25 @@ TEST(CVisualFrontEnd, CreationBelowInliersBuildsLandmarksWhileOthersAreStillReco
 	EXPECT_GE(always.translationErrors.size(), paper.translationErrors.size() / 2);
 	EXPECT_LT(median(always.translationErrors), 0.03);
 	EXPECT_LT(median(always.headingErrors), 0.5 * kDeg);
+}
+
+TEST(CVisualFrontEnd, ANarrowRecognitionCountsAsRecognizedButIsNotReported)
+{
+	// A spread no image can reach: every recognition of the second lap is
+	// dropped and counted, and none of them is taken for an unknown place
+	// (no landmark is built there); a small one drops none.
+	TVisualFrontEndOptions o;
+	const LapsResult paper = driveLaps(o, 2);
+	o.recognition_min_spread = 0.5;  // rad, about 29 deg
+	const LapsResult none = driveLaps(o, 2);
+	EXPECT_TRUE(none.translationErrors.empty());
+	EXPECT_GE(none.narrow, paper.translationErrors.size());
+	EXPECT_EQ(none.created, paper.created);
+	o.recognition_min_spread = 0.1 * kDeg;
+	const LapsResult all = driveLaps(o, 2);
+	EXPECT_EQ(all.narrow, 0u);
+	EXPECT_EQ(all.rows, paper.rows);
+	EXPECT_EQ(paper.narrow, 0u);
 }
 
 TEST(CVisualFrontEnd, SameImagesSameOutputs)
