@@ -20,9 +20,9 @@ while [[ $# -gt 0 ]]; do
   odometry="$1" csv="$2"; shift 2
   for f in "$odometry" "$csv"; do [[ -r "$f" ]] || { echo "error: cannot read '$f'" >&2; exit 1; }; done
   line="$(awk -v H="$HORIZON" -v P="$POS" -v R="$REL" -v D="$DEG" '
-    function wrap(a) { while (a > pi) a -= 2 * pi; while (a < -pi) a += 2 * pi; return a }
+    function absAngle(a) { while (a > pi) a -= 2 * pi; while (a < -pi) a += 2 * pi; return a < 0 ? -a : a }
     # The odometry pose at time t: the sample nearest t (binary search).
-    function pose(t,   lo, hi, mid) {
+    function pose(t,   lo, hi, mid, k) {
       lo = 1; hi = n
       while (hi - lo > 1) { mid = int((lo + hi) / 2); if (ot[mid] < t) lo = mid; else hi = mid }
       k = (t - ot[lo] <= ot[hi] - t) ? lo : hi; px = ox[k]; py = oy[k]; pa = oa[k] }
@@ -37,8 +37,7 @@ while [[ $# -gt 0 ]]; do
         dx = lx[L] - px; dy = ly[L] - py; cc = cos(pa); ss = sin(pa)
         rx = cc * dx + ss * dy; ry = -ss * dx + cc * dy; ra = la[L] - pa
         ex = rx + cos(ra) * mx[L] - sin(ra) * my[L]; ey = ry + sin(ra) * mx[L] + cos(ra) * my[L]
-        pass = sqrt((ex - zx)^2 + (ey - zy)^2) <= P + R * sqrt(zx^2 + zy^2) && \
-          (wrap(ra + ma[L] - za) < 0 ? -wrap(ra + ma[L] - za) : wrap(ra + ma[L] - za)) <= D * pi / 180
+        pass = sqrt((ex - zx)^2 + (ey - zy)^2) <= P + R * sqrt(zx^2 + zy^2) && absAngle(ra + ma[L] - za) <= D * pi / 180
       }
       if (pass) { lt[L] = t; lx[L] = px; ly[L] = py; la[L] = pa; mx[L] = zx; my[L] = zy; ma[L] = za }
       if ($c["accepted"] == 1) { a++; b += $c["beyond_3_sigma"]; if (pass) { ag++; bg += $c["beyond_3_sigma"] } }
