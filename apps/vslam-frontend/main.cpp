@@ -334,7 +334,8 @@ int main(int argc, const char** argv)
 		std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
 				  << " poorly conditioned (recognition_max_std_*), " << frontEnd.ambiguousRecognitions()
 				  << " ambiguous (recognition_ambiguity_min_gap), " << frontEnd.narrowRecognitions()
-				  << " narrow (recognition_min_spread_deg)\n";
+				  << " narrow (recognition_min_spread_deg), " << frontEnd.inconsistentRecognitions()
+				  << " inconsistent with the odometry (recognition_odometry_gate_s)\n";
 		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, filter, csvFile);
 		if (!groundTruthFile.empty() && options.heading_change)
 			printHeadingChangeAccuracy(headingRecords, groundTruthFile, headingCsvFile);

@@ -382,6 +382,7 @@ int CVSlamApp::run()
 		frontEndSummary.poorlyConditioned = frontEnd->poorlyConditionedRecognitions();
 		frontEndSummary.ambiguous = frontEnd->ambiguousRecognitions();
 		frontEndSummary.narrow = frontEnd->narrowRecognitions();
+		frontEndSummary.inconsistent = frontEnd->inconsistentRecognitions();
 		summary.frontEnd = frontEndSummary;
 	}
 

@@ -137,7 +137,8 @@ void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) c
 		  << ", creation: " << perImage(e.creationSeconds) << ", heading_change: " << perImage(e.headingSeconds) << "}\n"
 		  << "  heading_changes: {measured: " << e.headingChanges << ", failed: " << e.headingChangesFailed << "}\n"
 		  << "  recognitions_not_reported: {poorly_conditioned: " << e.poorlyConditioned
-		  << ", ambiguous: " << e.ambiguous << ", narrow: " << e.narrow << "}\n"
+		  << ", ambiguous: " << e.ambiguous << ", narrow: " << e.narrow
+		  << ", inconsistent: " << e.inconsistent << "}\n"
 		  << "  creation_attempts: " << e.creationAttempts << "\n"
 		  << "  creation_rejected:";
 		if (e.creationRejections.empty()) o << " {}";

@@ -124,7 +124,15 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 			m_narrow++;
 			continue;
 		}
+		// ... or where the odometry since its last recognition does not put it.
+		if (!agreesWithOdometry(
+				lm->lastReported, view.time, odometryPose, m->landmarkInRobot, m_options.odometryConsistency()))
+		{
+			m_inconsistent++;
+			continue;
+		}
 		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
+		lm->lastReported = ReportedRecognition{view.time, odometryPose, m->landmarkInRobot};
 		auto o = CObservationVisualLandmark::Create();
 		o->timestamp = obs.timestamp;
 		o->sensorLabel = obs.sensorLabel;

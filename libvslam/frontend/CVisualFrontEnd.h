@@ -72,6 +72,9 @@ class CVisualFrontEnd
 	/** Recognitions not reported because their inliers spread too little
 	 * (recognition_min_spread_deg). */
 	size_t narrowRecognitions() const { return m_narrow; }
+	/** Recognitions not reported because the odometry since the landmark's
+	 * last one does not put it there (recognition_odometry_gate_s). */
+	size_t inconsistentRecognitions() const { return m_inconsistent; }
 	/** Landmark creations tried, and those rejected by reason (the
 	 * creator's reason with its numbers replaced by "N"). */
 	size_t creationAttempts() const { return m_creationAttempts; }
@@ -115,6 +118,7 @@ class CVisualFrontEnd
 	size_t m_poorlyConditioned = 0;
 	size_t m_ambiguous = 0;
 	size_t m_narrow = 0;
+	size_t m_inconsistent = 0;
 	size_t m_creationAttempts = 0;
 	std::map<std::string, size_t> m_creationRejections;
 	std::map<std::string, PreviousImage> m_previousImage;  //!< by sensor label

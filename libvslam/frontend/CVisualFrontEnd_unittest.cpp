@@ -26,6 +26,7 @@ struct LapsResult
 	std::vector<std::string> rows;  //!< every output, for determinism
 	size_t landmarksInDatabase = 0, pruned = 0;
 	size_t narrow = 0;  //!< recognitions not reported for recognition_min_spread_deg
+	size_t inconsistent = 0;  //!< ... for recognition_odometry_gate_s
 	/** Per landmark, measured over true range of each measurement from
 	 * beyond 0.5 m in the last lap: how far off the landmark's scale is. */
 	std::map<int64_t, std::vector<double>> rangeRatiosLastLap;
@@ -33,9 +34,10 @@ struct LapsResult
 };
 
 /** `odometrySigma`: the odometry the front-end gets is the true path plus
- * a random walk of this many m/sqrt(m) (0: exact). */
+ * a random walk of this many m/sqrt(m) (0: exact). `odometryJumpFrame`:
+ * from that image on, the odometry is 1 m to the left of that. */
 LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double blackoutAfterLaps = 1e9,
-	double odometrySigma = 0)
+	double odometrySigma = 0, int odometryJumpFrame = -1)
 {
 	vslam::testing::RoomRenderer room(5.0, 4.0, 2.5, 42);
 	mrpt::img::TCamera cam;
@@ -58,6 +60,7 @@ LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double 
 		const double noise = odometrySigma * std::sqrt(step);
 		odometry = k == 0 ? robot
 						  : odometry + (robot - previous) + mrpt::poses::CPose2D(noise * unit(rng), noise * unit(rng), 0);
+		if (k == odometryJumpFrame) odometry = odometry + mrpt::poses::CPose2D(0, 1, 0);
 		previous = robot;
 		mrpt::obs::CObservationImage obs;
 		obs.timestamp = mrpt::Clock::fromDouble(1e9 + 0.5 * k);
@@ -91,6 +94,7 @@ LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double 
 	}
 	run.landmarksInDatabase = fe.database().size();
 	run.narrow = fe.narrowRecognitions();
+	run.inconsistent = fe.inconsistentRecognitions();
 	return run;
 }
 
@@ -192,6 +196,46 @@ TEST(CVisualFrontEnd, ANarrowRecognitionCountsAsRecognizedButIsNotReported)
 	EXPECT_EQ(all.narrow, 0u);
 	EXPECT_EQ(all.rows, paper.rows);
 	EXPECT_EQ(paper.narrow, 0u);
+}
+
+/** The measurement rows ("M k ...") of images k in [from, to). */
+std::vector<std::string> measurementRows(const LapsResult& run, int from, int to)
+{
+	std::vector<std::string> rows;
+	for (const auto& r : run.rows)
+	{
+		const int k = std::stoi(r.substr(2));
+		if (r[0] == 'M' && k >= from && k < to) rows.push_back(r);
+	}
+	return rows;
+}
+
+TEST(CVisualFrontEnd, ARecognitionTheOdometryRulesOutCountsAsRecognizedButIsNotReported)
+{
+	// A third into the second lap the odometry jumps 1 m to the left (as a
+	// wrong recognition would look against right odometry). The gate drops
+	// the recognitions of landmarks recognized in the 5 s (10 images) before
+	// the jump, and only those: before it (exact odometry) and once 5 s have
+	// passed, the outputs are those without the gate; and no landmark is built
+	// for the dropped ones. (The scale track is off: it would take the jump
+	// for a scale error.)
+	TVisualFrontEndOptions o;
+	o.scale_refinement = false;
+	const int jump = 110, afterHorizon = jump + 11;  // of about 168 images
+	const LapsResult ungated = driveLaps(o, 2, 1e9, 0, jump);
+	o.recognition_odometry_gate_s = 5;
+	const LapsResult gated = driveLaps(o, 2, 1e9, 0, jump);
+	std::cout << "recognitions dropped after the odometry's jump: " << gated.inconsistent << " of "
+			  << measurementRows(ungated, jump, afterHorizon).size() << "\n";
+	EXPECT_EQ(ungated.inconsistent, 0u);
+	EXPECT_GE(measurementRows(ungated, 0, jump).size(), 20u);
+	EXPECT_EQ(measurementRows(gated, 0, jump), measurementRows(ungated, 0, jump));
+	EXPECT_GE(gated.inconsistent, 5u);
+	EXPECT_EQ(measurementRows(gated, jump, afterHorizon).size() + gated.inconsistent,
+		measurementRows(ungated, jump, afterHorizon).size());
+	EXPECT_GE(measurementRows(ungated, afterHorizon, 1000).size(), 10u);
+	EXPECT_EQ(measurementRows(gated, afterHorizon, 1000), measurementRows(ungated, afterHorizon, 1000));
+	EXPECT_EQ(gated.created, ungated.created);
 }
 
 TEST(CVisualFrontEnd, SameImagesSameOutputs)

@@ -5,6 +5,7 @@
  * the landmark database and recognition by a robust pose solve.
  */
 #include <libvslam/config/Overrides.h>
+#include <libvslam/frontend/OdometryConsistency.h>
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <cmath>
@@ -151,6 +152,20 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * constrain the pose poorly, and on a self-similar texture a few wrong
 	 * matches there can agree on a wrong pose (0: no test). */
 	double recognition_min_spread = 0;  //!< rad (INI: degrees)
+	/** A recognition is kept only if it agrees with the same landmark's last
+	 * kept one, carried to now by the odometry, when that one is at most
+	 * this old (OdometryConsistency.h; 0: no test): within
+	 * recognition_odometry_gate_m + recognition_odometry_gate_rel x its
+	 * distance, and recognition_odometry_gate_deg. */
+	double recognition_odometry_gate_s = 0;
+	double recognition_odometry_gate_m = 0.3;
+	double recognition_odometry_gate_rel = 0.1;
+	double recognition_odometry_gate_phi = 10 * M_PI / 180;  //!< rad (INI: degrees)
+	TOdometryConsistency odometryConsistency() const
+	{
+		return {recognition_odometry_gate_s, recognition_odometry_gate_m, recognition_odometry_gate_rel,
+			recognition_odometry_gate_phi};
+	}
 	/** After an accepted pose: the landmark points it leaves unmatched are
 	 * sought among the image features within this many pixels of where it
 	 * projects them, the pose refined with what is found and the inliers

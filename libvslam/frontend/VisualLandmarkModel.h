@@ -5,10 +5,12 @@
  * their descriptors and bookkeeping. Not the images.
  */
 #include <libvslam/frontend/LandmarkScaleTrack.h>
+#include <libvslam/frontend/OdometryConsistency.h>
 #include <mrpt/poses/CPose2D.h>
 #include <opencv2/core.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace vslam
@@ -32,6 +34,8 @@ struct VisualLandmarkModel
 	int recognitions = 0;
 	int missesInARow = 0;
 	double lastSeen = 0;  //!< s
+	/** Its last reported recognition (recognition_odometry_gate_s). */
+	std::optional<ReportedRecognition> lastReported;
 	/** Its scale, refined from later sightings (scale_refinement). */
 	LandmarkScaleTrack scale;
 
