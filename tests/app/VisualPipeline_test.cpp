@@ -82,6 +82,8 @@ TEST(VisualPipeline, ImagesInOneRunBeatDeadReckoning)
 	EXPECT_GE(summaryValue(summary, "landmarks_created:"), 3) << summary;
 	EXPECT_GE(summaryValue(summary, "recognitions_not_reported: \\{poorly_conditioned:"), 0) << summary;
 	EXPECT_GE(summaryValue(summary, "recognitions_not_reported: \\{[^}]*ambiguous:"), 0) << summary;
+	EXPECT_GE(summaryValue(summary, "recognitions_not_reported: \\{[^}]*narrow:"), 0) << summary;
+	EXPECT_GE(summaryValue(summary, "recognitions_not_reported: \\{[^}]*inconsistent:"), 0) << summary;
 	EXPECT_GT(summaryValue(summary, "  measurements:"), images / 3) << summary;
 	const double vslamRmse = summaryValue(summary, "  vslam: \\{associated_poses: [0-9]+, rmse:");
 	const double deadReckoning = summaryValue(summary, "  dead_reckoning: \\{associated_poses: [0-9]+, rmse:");
