@@ -132,7 +132,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 			continue;
 		}
 		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
-		lm->lastReported = ReportedRecognition{view.time, odometryPose, m->landmarkInRobot};
+		lm->lastReported = ReportedRecognition{view.time, odometryPose.asTPose(), m->landmarkInRobot.asTPose()};
 		auto o = CObservationVisualLandmark::Create();
 		o->timestamp = obs.timestamp;
 		o->sensorLabel = obs.sensorLabel;

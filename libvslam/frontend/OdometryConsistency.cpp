@@ -8,7 +8,8 @@ namespace vslam
 mrpt::poses::CPose2D predictFromEarlier(const ReportedRecognition& earlier, const mrpt::poses::CPose2D& odometryNow)
 {
 	// The landmark frame in the odometry frame, seen from the robot now.
-	return (earlier.odometryPose + earlier.landmarkInRobot) - odometryNow;
+	return (mrpt::poses::CPose2D(earlier.odometryPose) + mrpt::poses::CPose2D(earlier.landmarkInRobot)) -
+		odometryNow;
 }
 
 bool agreesWithOdometry(const std::optional<ReportedRecognition>& earlier, double time,

@@ -10,6 +10,7 @@
  * front-end has no map, only the odometry; over a few seconds its drift is
  * centimetres, so the tolerance can be tight (results.md 9.44).
  */
+#include <mrpt/math/TPose2D.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <optional>
@@ -17,12 +18,13 @@
 namespace vslam
 {
 /** A reported recognition of a landmark: when, the robot's odometry pose
- * then, and the landmark frame measured in the robot frame. */
+ * then, and the landmark frame measured in the robot frame. Plain poses:
+ * every landmark keeps one (56 bytes; with CPose2D's 96 each, 200). */
 struct ReportedRecognition
 {
 	double time = 0;  //!< s
-	mrpt::poses::CPose2D odometryPose;
-	mrpt::poses::CPose2D landmarkInRobot;
+	mrpt::math::TPose2D odometryPose;
+	mrpt::math::TPose2D landmarkInRobot;
 };
 
 struct TOdometryConsistency

@@ -5,6 +5,7 @@
 #include <cmath>
 
 using namespace vslam;
+using mrpt::math::TPose2D;
 using mrpt::poses::CPose2D;
 
 namespace
@@ -15,7 +16,7 @@ constexpr double kDeg = M_PI / 180;
  * turned 30 deg against it. */
 ReportedRecognition earlierAt(double time)
 {
-	return {time, CPose2D(1, 2, 90 * kDeg), CPose2D(3, 1, 30 * kDeg)};
+	return {time, TPose2D(1, 2, 90 * kDeg), TPose2D(3, 1, 30 * kDeg)};
 }
 
 TOdometryConsistency fiveSeconds()
@@ -58,7 +59,7 @@ TEST(OdometryConsistency, AcceptsWithinThePositionToleranceGrowingWithDistance)
 	// The relative share: 0.7 m off fails at 3.8 m (0.68 m allowed) and
 	// passes at 7.8 m (1.08 m allowed).
 	EXPECT_FALSE(agreesWithOdometry(earlierAt(10), 12, CPose2D(1, 2, 90 * kDeg), CPose2D(3.7, 1, 30 * kDeg), fiveSeconds()));
-	const ReportedRecognition far{10, CPose2D(1, 2, 90 * kDeg), CPose2D(7, 1, 30 * kDeg)};
+	const ReportedRecognition far{10, TPose2D(1, 2, 90 * kDeg), TPose2D(7, 1, 30 * kDeg)};
 	EXPECT_TRUE(agreesWithOdometry(far, 12, CPose2D(1, 2, 90 * kDeg), CPose2D(7.7, 1, 30 * kDeg), fiveSeconds()));
 }
 
