@@ -11,10 +11,16 @@
 # (a landmark is a view: it is recognized from near its frame, looking the
 # way it looked). Both are 999 where no landmark qualifies.
 #
-# usage: scripts/kidnap_view_coverage.sh BATCH_OUT WORK_DIR [KIDNAP_TIME_S=240] [SCENARIO=kidnap]
+# With VIEWS=recognitions, every pose from which a landmark was recognized
+# before the kidnap (a measurement the pre-filter accepted) counts as a
+# view too, not only its frame: what the map would cover if each landmark
+# also kept the appearance of the views it was recognized from.
+#
+# usage: scripts/kidnap_view_coverage.sh BATCH_OUT WORK_DIR [KIDNAP_TIME_S=240] [SCENARIO=kidnap] [VIEWS=frames]
 set -euo pipefail
-[ $# -ge 2 ] || { echo "usage: $0 BATCH_OUT WORK_DIR [KIDNAP_TIME_S] [SCENARIO]" >&2; exit 2; }
-out=$1 work=$2 kidnap=${3:-240} scenario=${4:-kidnap}
+[ $# -ge 2 ] || { echo "usage: $0 BATCH_OUT WORK_DIR [KIDNAP_TIME_S] [SCENARIO] [VIEWS=frames|recognitions]" >&2; exit 2; }
+out=$1 work=$2 kidnap=${3:-240} scenario=${4:-kidnap} views=${5:-frames}
+case $views in frames | recognitions) ;; *) echo "VIEWS must be frames or recognitions, not '$views'" >&2; exit 2 ;; esac
 root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$work"
 for d in "$out/$scenario"/data_seed*; do
@@ -25,14 +31,16 @@ for d in "$out/$scenario"/data_seed*; do
     --accuracy-csv "$csv" > "$work/seed$seed.log"
   t0=$(awk '!/^#/ { print int($1); exit }' "$d/sim_groundtruth.tum")
   printf 'seed %s: ' "$seed"
-  awk -v T0="$t0" -v TK="$kidnap" '
+  awk -v T0="$t0" -v TK="$kidnap" -v ALL="$([ "$views" = recognitions ] && echo 1 || echo 0)" '
     function wrap(a) { while (a > 180) a -= 360; while (a < -180) a += 360; return a }
     BEGIN { FS = "[ ,]+"; pi = atan2(0, -1) }
     FNR == 1 { file++ }
     file == 1 && !/^#/ { t = sprintf("%.1f", $1 - T0); X[t] = $2; Y[t] = $3; H[t] = 2 * atan2($7, $8) * 180 / pi; next }
     file == 2 && FNR > 1 {  # t,landmark,dx,dy,dphi_deg,true_dx,true_dy,true_dphi_deg,...
       t = sprintf("%.1f", $1 - T0); id = $2
-      if (t + 0 >= TK || (id in LX) || !(t in X)) next
+      if (t + 0 >= TK || !(t in X)) next
+      if (ALL && (id in LX) && $12 == 1) { v++; LX[id "/" v] = X[t]; LY[id "/" v] = Y[t]; LH[id "/" v] = H[t] }
+      if (id in LX) next
       c = cos(H[t] * pi / 180); s = sin(H[t] * pi / 180)
       LX[id] = X[t] + c * $6 - s * $7; LY[id] = Y[t] + s * $6 + c * $7; LH[id] = wrap(H[t] + $8); n++
     }

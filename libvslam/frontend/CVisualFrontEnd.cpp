@@ -126,7 +126,7 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		}
 		// ... or where the odometry since its last recognition does not put it.
 		if (!agreesWithOdometry(
-				lm->lastReported, view.time, odometryPose, m->landmarkInRobot, m_options.odometryConsistency()))
+				lm->lastReported, view.time, odometryPose, m->landmarkInRobot, m_options.recognition_odometry_gate))
 		{
 			m_inconsistent++;
 			continue;

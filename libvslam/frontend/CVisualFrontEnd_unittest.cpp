@@ -223,7 +223,7 @@ TEST(CVisualFrontEnd, ARecognitionTheOdometryRulesOutCountsAsRecognizedButIsNotR
 	o.scale_refinement = false;
 	const int jump = 110, afterHorizon = jump + 11;  // of about 168 images
 	const LapsResult ungated = driveLaps(o, 2, 1e9, 0, jump);
-	o.recognition_odometry_gate_s = 5;
+	o.recognition_odometry_gate.horizon = 5;
 	const LapsResult gated = driveLaps(o, 2, 1e9, 0, jump);
 	std::cout << "recognitions dropped after the odometry's jump: " << gated.inconsistent << " of "
 			  << measurementRows(ungated, jump, afterHorizon).size() << "\n";

@@ -78,14 +78,11 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
 	recognition_min_spread = readDegreesAsRadians(
 		c, s, "recognition_min_spread_deg", recognition_min_spread, Range::closed(0, 90));
-	recognition_odometry_gate_s =
-		readDouble(c, s, "recognition_odometry_gate_s", recognition_odometry_gate_s, Range::nonNegative());
-	recognition_odometry_gate_m =
-		readDouble(c, s, "recognition_odometry_gate_m", recognition_odometry_gate_m, Range::nonNegative());
-	recognition_odometry_gate_rel =
-		readDouble(c, s, "recognition_odometry_gate_rel", recognition_odometry_gate_rel, Range::nonNegative());
-	recognition_odometry_gate_phi = readDegreesAsRadians(
-		c, s, "recognition_odometry_gate_deg", recognition_odometry_gate_phi, Range::closed(0, 180));
+	auto& gate = recognition_odometry_gate;
+	gate.horizon = readDouble(c, s, "recognition_odometry_gate_s", gate.horizon, Range::nonNegative());
+	gate.position = readDouble(c, s, "recognition_odometry_gate_m", gate.position, Range::nonNegative());
+	gate.relative = readDouble(c, s, "recognition_odometry_gate_rel", gate.relative, Range::nonNegative());
+	gate.heading = readDegreesAsRadians(c, s, "recognition_odometry_gate_deg", gate.heading, Range::closed(0, 180));
 	recognition_guided_radius_px =
 		readDouble(c, s, "recognition_guided_radius_px", recognition_guided_radius_px, Range::nonNegative());
 	search_index = readWord(c, s, "search_index", search_index, {"kdtree", "flann", "bbf"});
@@ -181,13 +178,13 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
 	c.write(s, "recognition_min_spread_deg", recognition_min_spread * 180 / M_PI, 30, 10,
 		"Reject a pose whose inliers spread less than this across the image (std of their viewing directions along their minor axis) [deg] (0: off)");
-	c.write(s, "recognition_odometry_gate_s", recognition_odometry_gate_s, 30, 10,
+	c.write(s, "recognition_odometry_gate_s", recognition_odometry_gate.horizon, 30, 10,
 		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry [s] (0: off)");
-	c.write(s, "recognition_odometry_gate_m", recognition_odometry_gate_m, 30, 10,
+	c.write(s, "recognition_odometry_gate_m", recognition_odometry_gate.position, 30, 10,
 		"... position tolerance of that test [m], plus");
-	c.write(s, "recognition_odometry_gate_rel", recognition_odometry_gate_rel, 30, 10,
+	c.write(s, "recognition_odometry_gate_rel", recognition_odometry_gate.relative, 30, 10,
 		"... this share of the measured distance");
-	c.write(s, "recognition_odometry_gate_deg", recognition_odometry_gate_phi * 180 / M_PI, 30, 10,
+	c.write(s, "recognition_odometry_gate_deg", recognition_odometry_gate.heading * 180 / M_PI, 30, 10,
 		"... heading tolerance of that test [deg]");
 	c.write(s, "recognition_guided_radius_px", recognition_guided_radius_px, 30, 10,
 		"After an accepted pose, seek its unmatched landmark points among the features this near their projection [px] (0: off)");

@@ -154,18 +154,10 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double recognition_min_spread = 0;  //!< rad (INI: degrees)
 	/** A recognition is kept only if it agrees with the same landmark's last
 	 * kept one, carried to now by the odometry, when that one is at most
-	 * this old (OdometryConsistency.h; 0: no test): within
-	 * recognition_odometry_gate_m + recognition_odometry_gate_rel x its
-	 * distance, and recognition_odometry_gate_deg. */
-	double recognition_odometry_gate_s = 0;
-	double recognition_odometry_gate_m = 0.3;
-	double recognition_odometry_gate_rel = 0.1;
-	double recognition_odometry_gate_phi = 10 * M_PI / 180;  //!< rad (INI: degrees)
-	TOdometryConsistency odometryConsistency() const
-	{
-		return {recognition_odometry_gate_s, recognition_odometry_gate_m, recognition_odometry_gate_rel,
-			recognition_odometry_gate_phi};
-	}
+	 * `horizon` old (OdometryConsistency.h). INI keys: recognition_odometry_gate_s
+	 * (the horizon; 0: no test), _m and _rel (within _m + _rel x its
+	 * distance) and _deg. */
+	TOdometryConsistency recognition_odometry_gate;
 	/** After an accepted pose: the landmark points it leaves unmatched are
 	 * sought among the image features within this many pixels of where it
 	 * projects them, the pose refined with what is found and the inliers
