@@ -43,6 +43,61 @@ std::pair<int, int> twoNearest(
 	}
 	return {j1, j2};
 }
+
+/** For each row of b, its two nearest rows of a so far, by the ranking
+ * scores |a_i|^2 - 2 a_i.b_j (b's side of the ratio test). */
+class NearestOfB
+{
+   public:
+	explicit NearestOfB(int rowsB) : m_nearest(rowsB) {}
+
+	/** Row `ai` of a with its row `dotsRow` of the product a.b^T. */
+	void add(const float* dotsRow, float aNorm, int ai, const vslam::MatchFilter* allowed)
+	{
+		for (size_t j = 0; j < m_nearest.size(); j++)
+		{
+			if (allowed && !(*allowed)(ai, static_cast<int>(j))) continue;
+			const float s = aNorm - 2 * dotsRow[j];
+			Two& n = m_nearest[j];
+			if (s < n.s1)
+			{
+				n.s2 = n.s1;
+				n.i2 = n.i1;
+				n.s1 = s;
+				n.i1 = ai;
+			}
+			else if (s < n.s2)
+			{
+				n.s2 = s;
+				n.i2 = ai;
+			}
+		}
+	}
+
+	/** Whether row `ai` of a is row `bj`'s nearest and passes the ratio
+	 * test, by distances measured directly. */
+	bool passes(const ConstRows& A, const ConstRows& B, int ai, int bj, double ratio) const
+	{
+		const Two& n = m_nearest[bj];
+		if (n.i2 < 0) return false;  // no second candidate: no ratio test
+		float e1 = (A.row(n.i1) - B.row(bj)).norm(), e2 = (A.row(n.i2) - B.row(bj)).norm();
+		int nearest = n.i1;
+		if (e2 < e1)
+		{
+			std::swap(e1, e2);
+			nearest = n.i2;
+		}
+		return nearest == ai && e1 < ratio * e2;
+	}
+
+   private:
+	struct Two
+	{
+		float s1 = std::numeric_limits<float>::infinity(), s2 = std::numeric_limits<float>::infinity();
+		int i1 = -1, i2 = -1;
+	};
+	std::vector<Two> m_nearest;
+};
 }  // namespace
 
 std::vector<std::pair<int, int>> vslam::matchDescriptors(const cv::Mat& a, const cv::Mat& b, double ratio)
@@ -51,7 +106,7 @@ std::vector<std::pair<int, int>> vslam::matchDescriptors(const cv::Mat& a, const
 }
 
 std::vector<std::pair<int, int>> vslam::matchDescriptors(
-	const cv::Mat& a, const cv::Mat& b, double ratio, const MatchFilter* allowed)
+	const cv::Mat& a, const cv::Mat& b, double ratio, const MatchFilter* allowed, bool bothWays)
 {
 	std::vector<std::pair<int, int>> out;
 	if (a.rows == 0 || b.rows < 2) return out;
@@ -63,6 +118,8 @@ std::vector<std::pair<int, int>> vslam::matchDescriptors(
 
 	// For each row of b: the distance and row of its best a so far.
 	std::vector<std::pair<float, int>> bestForB(b.rows, {0.f, -1});
+	NearestOfB nearestOfB(bothWays ? b.rows : 0);
+	const Eigen::VectorXf aNorms = bothWays ? Eigen::VectorXf(A.rowwise().squaredNorm()) : Eigen::VectorXf();
 	RowMajorFloats dots;
 	for (int start = 0; start < a.rows; start += kRowsPerBlock)
 	{
@@ -71,6 +128,7 @@ std::vector<std::pair<int, int>> vslam::matchDescriptors(
 		for (int i = 0; i < n; i++)
 		{
 			const int ai = start + i;
+			if (bothWays) nearestOfB.add(dots.row(i).data(), aNorms[ai], ai, allowed);
 			auto [j1, j2] = twoNearest(dots.row(i).data(), bNorms, ai, allowed);
 			if (j2 < 0) continue;  // no second candidate: no ratio test
 			float d1 = (A.row(ai) - B.row(j1)).norm(), d2 = (A.row(ai) - B.row(j2)).norm();
@@ -85,6 +143,7 @@ std::vector<std::pair<int, int>> vslam::matchDescriptors(
 		}
 	}
 	for (int j = 0; j < b.rows; j++)
-		if (bestForB[j].second >= 0) out.emplace_back(bestForB[j].second, j);
+		if (bestForB[j].second >= 0 && (!bothWays || nearestOfB.passes(A, B, bestForB[j].second, j, ratio)))
+			out.emplace_back(bestForB[j].second, j);
 	return out;
 }

@@ -6,6 +6,13 @@
  * blocks of rows (2-3x faster than OpenCV's brute-force matcher on the
  * front-end's sizes, benchmarks.md); the two nearest are then measured
  * directly, so the ratio test sees distances as exact as a direct sum's.
+ *
+ * Both ways (optional): the pair must also pass the ratio test from b's
+ * side, against b's second nearest row of a. On a self-similar texture
+ * (grass, foliage) one landmark point resembles many image features;
+ * taking the best of them still passes a's one-way test when the landmark
+ * holds no second similar point, and a handful of such matches can agree
+ * on a wrong pose (results.md 9.43, 9.45).
  */
 #include <opencv2/core.hpp>
 
@@ -25,7 +32,10 @@ using MatchFilter = std::function<bool(int i, int j)>;
 /** The same among the pairs `allowed` lets through (all if null): the
  * nearest and second nearest of each row of `a` are sought among its
  * allowed rows of `b` only (a guided search, e.g. near an epipolar line);
- * a row with fewer than two allowed rows is not matched. */
+ * a row with fewer than two allowed rows is not matched. With `bothWays`,
+ * a pair (i, j) is kept only if row i is also the nearest of b's row j
+ * among its allowed rows of `a`, nearer than `ratio` x the second nearest
+ * (a row of b with fewer than two allowed rows of a is not matched). */
 std::vector<std::pair<int, int>> matchDescriptors(
-	const cv::Mat& a, const cv::Mat& b, double ratio, const MatchFilter* allowed);
+	const cv::Mat& a, const cv::Mat& b, double ratio, const MatchFilter* allowed, bool bothWays = false);
 }  // namespace vslam

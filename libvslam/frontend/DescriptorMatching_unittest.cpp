@@ -141,3 +141,66 @@ TEST(DescriptorMatching, AGuidedSearchComparesOnlyTheAllowedCandidates)
 	// Null means no guidance.
 	EXPECT_EQ(matchDescriptors(a, b, 0.8, nullptr), unguided);
 }
+
+TEST(DescriptorMatching, BothWaysAlsoTestsTheRatioFromBsSide)
+{
+	cv::Mat a, b;
+	makeDescriptors(200, 300, 100, a, b, 5);
+	const auto isMatch = [](const std::vector<std::pair<int, int>>& m, int i, int j) {
+		return std::find(m.begin(), m.end(), std::make_pair(i, j)) != m.end();
+	};
+	// A self-similar texture: a's rows 150 and 151 are two copies of b's
+	// row 0, each with small noise. From a's side each passes (b holds one
+	// such row); b's row 0 keeps the nearer; from b's side its two nearest
+	// are both copies: ambiguous.
+	cv::RNG rng(3);
+	for (int i : {150, 151})
+	{
+		cv::Mat noise(1, 128, CV_32F);
+		rng.fill(noise, cv::RNG::NORMAL, 0, 3);
+		cv::Mat row = b.row(0) + noise;
+		row.copyTo(a.row(i));
+	}
+	// (Row 0 of a is also a copy of b's row 0, with noise 5: move it away.)
+	rng.fill(a.row(0), cv::RNG::UNIFORM, 0, 150);
+	const auto oneWayTwins = matchDescriptors(a, b, 0.8);
+	EXPECT_TRUE(isMatch(oneWayTwins, 150, 0) || isMatch(oneWayTwins, 151, 0));
+	const auto bothWaysTwins = matchDescriptors(a, b, 0.8, nullptr, true);
+	for (const auto& [i, j] : bothWaysTwins) EXPECT_NE(j, 0);
+	// Every other match is the one-way match that also passes the ratio test
+	// from b's side, checked by direct sums in double precision.
+	size_t kept = 0;
+	for (const auto& [i, j] : oneWayTwins)
+	{
+		if (j == 0) continue;
+		double e1 = INFINITY, e2 = INFINITY;
+		int nearest = -1;
+		for (int k = 0; k < a.rows; k++)
+		{
+			const double d = cv::norm(a.row(k), b.row(j), cv::NORM_L2);
+			if (d < e1)
+			{
+				e2 = e1;
+				e1 = d;
+				nearest = k;
+			}
+			else if (d < e2)
+				e2 = d;
+		}
+		const bool passes = nearest == i && e1 < 0.8 * e2;
+		EXPECT_EQ(isMatch(bothWaysTwins, i, j), passes) << i << " " << j;
+		kept += passes ? 1 : 0;
+	}
+	EXPECT_EQ(bothWaysTwins.size(), kept);
+	// The true matches with moderate noise (a's rows i < 100 with noise 5 +
+	// i % 40 up to 25 per value: distance about 280, against about 690 to a
+	// random row) pass from both sides; the noisiest may fail either way.
+	for (int i = 1; i < 100; i++)
+		if (5 + i % 40 <= 25) EXPECT_TRUE(isMatch(bothWaysTwins, i, 3 * i)) << i;
+	// Off: the one-way matches.
+	EXPECT_EQ(matchDescriptors(a, b, 0.8, nullptr, false), oneWayTwins);
+	// Guided: b's side compares only the allowed rows of a too. With a's row
+	// 151 not allowed to match b's row 0, row 150 is unambiguous again.
+	const vslam::MatchFilter notTheTwin = [](int i, int j) { return !(i == 151 && j == 0); };
+	EXPECT_TRUE(isMatch(matchDescriptors(a, b, 0.8, &notTheTwin, true), 150, 0));
+}

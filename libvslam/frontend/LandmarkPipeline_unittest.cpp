@@ -956,3 +956,58 @@ TEST(LandmarkPipeline, GuidedRecognitionTakesBackThePointsALookAlikeFeatureTook)
 	std::cout << "inliers of " << inView << " points in view: " << inliersUnguided << " unguided, " << inliersGuided
 			  << " guided\n";
 }
+
+TEST(LandmarkRecognizer, BothWaysLeavesOutThePointsThatResembleSeveralFeatures)
+{
+	// As above, every other feature in view has a look-alike elsewhere in
+	// the image. One-way, each such landmark point keeps the nearer of its
+	// two features, the wrong one half the time: an outlier among the
+	// matches. Both ways, those points are ambiguous from their own side and
+	// are not matched at all: what is left are the distinct points, every
+	// one an inlier.
+	const mrpt::poses::CPose2D query(1.0, 0.3, 5 * kDeg);
+	const mrpt::poses::CPose2D truth = mrpt::poses::CPose2D() - query;
+	TVisualFrontEndOptions oneWay;
+	TVisualFrontEndOptions bothWays = oneWay;
+	bothWays.recognition_match_both_ways = true;
+	int outliersOneWay = 0, outliersBothWays = 0;
+	for (uint32_t seed = 1; seed <= 10; seed++)
+	{
+		std::mt19937 rng(seed);
+		const Scene scene = makeScene(rng, 300);
+		VisualLandmarkModel lm;
+		lm.id = 1;
+		for (const auto& p : scene.points) lm.points.emplace_back(p);
+		lm.descriptors = scene.descriptors.clone();
+		ImageFeatures image = view(scene, query, rng, 0.5);
+		const int n = static_cast<int>(image.size());
+		std::normal_distribution<double> g;
+		std::uniform_real_distribution<float> u(0, 1);
+		for (int i = 0; i < n; i += 2)
+		{
+			const int row = static_cast<int>(scenePointOf(scene, image.descriptors.row(i)));
+			cv::Mat copy = scene.descriptors.row(row).clone();
+			for (int d = 0; d < 128; d++) copy.at<float>(0, d) += static_cast<float>(2 * g(rng));
+			image.pixels.emplace_back(640 * u(rng), 480 * u(rng));
+			image.descriptors.push_back(copy);
+		}
+		const int distinct = n / 2;  // the odd rows: no look-alike
+		const auto a = recognizeLandmark(image, lm, kMount, oneWay);
+		const auto b = recognizeLandmark(image, lm, kMount, bothWays);
+		ASSERT_TRUE(a && b) << "seed " << seed;
+		EXPECT_EQ(a->matches, n) << "seed " << seed;  // every point in view, half of them with a look-alike
+		EXPECT_LT(a->NPoints, a->matches) << "seed " << seed;
+		// Left: every distinct point, an inlier, and a few whose two features
+		// happen to differ in distance by more than the ratio (each of the two
+		// distances about 22.6 +- 1.4 here: 2-sigma draws on both sides).
+		EXPECT_GE(b->NPoints, distinct) << "seed " << seed;
+		EXPECT_LE(b->matches, distinct + n / 20) << "seed " << seed;
+		outliersOneWay += a->matches - a->NPoints;
+		outliersBothWays += b->matches - b->NPoints;
+		EXPECT_LT((b->landmarkInRobot - truth).norm(), 0.02) << "seed " << seed;
+		EXPECT_LT(std::abs(mrpt::math::wrapToPi(b->landmarkInRobot.phi() - truth.phi())), 0.2 * kDeg) << "seed " << seed;
+	}
+	// One-way, about a quarter of the matches are outliers; both ways, at most a few.
+	std::cout << "outliers among the matches: one-way " << outliersOneWay << ", both ways " << outliersBothWays << "\n";
+	EXPECT_LT(outliersBothWays * 10, outliersOneWay);
+}

@@ -292,7 +292,8 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 {
 	const cv::Mat& query = image.codes.empty() ? image.descriptors : image.codes;
 	const cv::Mat landmarkDescriptors = DescriptorCodec::decode(lm.descriptors);
-	const auto matches = matchDescriptors(query, landmarkDescriptors, o.match_ratio);
+	const auto matches =
+		matchDescriptors(query, landmarkDescriptors, o.match_ratio, nullptr, o.recognition_match_both_ways);
 	if (static_cast<int>(matches.size()) < o.recognition_min_inliers) return std::nullopt;
 	Correspondences c;
 	for (const auto& [qi, pi] : matches) c.add(lm, image, qi, pi);

@@ -78,6 +78,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
 	recognition_min_spread = readDegreesAsRadians(
 		c, s, "recognition_min_spread_deg", recognition_min_spread, Range::closed(0, 90));
+	recognition_match_both_ways = readBool(c, s, "recognition_match_both_ways", recognition_match_both_ways);
 	auto& gate = recognition_odometry_gate;
 	gate.horizon = readDouble(c, s, "recognition_odometry_gate_s", gate.horizon, Range::nonNegative());
 	gate.position = readDouble(c, s, "recognition_odometry_gate_m", gate.position, Range::nonNegative());
@@ -178,6 +179,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
 	c.write(s, "recognition_min_spread_deg", recognition_min_spread * 180 / M_PI, 30, 10,
 		"Reject a pose whose inliers spread less than this across the image (std of their viewing directions along their minor axis) [deg] (0: off)");
+	c.write(s, "recognition_match_both_ways", recognition_match_both_ways, 30, 10,
+		"Keep a feature-to-point match only if the ratio test also passes from the point's side (against self-similar textures)");
 	c.write(s, "recognition_odometry_gate_s", recognition_odometry_gate.horizon, 30, 10,
 		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry [s] (0: off)");
 	c.write(s, "recognition_odometry_gate_m", recognition_odometry_gate.position, 30, 10,

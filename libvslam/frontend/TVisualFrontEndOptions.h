@@ -152,6 +152,12 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * constrain the pose poorly, and on a self-similar texture a few wrong
 	 * matches there can agree on a wrong pose (0: no test). */
 	double recognition_min_spread = 0;  //!< rad (INI: degrees)
+	/** Keep a match of an image feature to a landmark point only if it also
+	 * passes the ratio test from the point's side: the feature is the
+	 * point's nearest in the image, nearer than match_ratio x the second
+	 * nearest (DescriptorMatching.h). Against self-similar textures, where
+	 * one point resembles many features. */
+	bool recognition_match_both_ways = false;
 	/** A recognition is kept only if it agrees with the same landmark's last
 	 * kept one, carried to now by the odometry, when that one is at most
 	 * `horizon` old (OdometryConsistency.h). INI keys: recognition_odometry_gate_s
