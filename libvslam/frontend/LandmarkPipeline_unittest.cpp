@@ -903,6 +903,43 @@ TEST(LandmarkPipeline, GuidedMatchingBuildsALandmarkFromARepeatedTexture)
 	EXPECT_LT(relativeErrors[relativeErrors.size() * 9 / 10], 0.07);
 }
 
+namespace
+{
+/** A landmark of 300 points whose frame is the world's, and the image of it
+ * from `query` (0.5 px of pixel noise) in which every other feature in view
+ * appears a second time at a random pixel: a look-alike, the same texture
+ * element with another descriptor noise (as on a repeated pattern). */
+struct LookAlikes
+{
+	VisualLandmarkModel landmark;
+	ImageFeatures image;
+	int inView = 0;  //!< features of points in view, before the look-alikes
+};
+
+LookAlikes withLookAlikes(uint32_t seed, const mrpt::poses::CPose2D& query)
+{
+	std::mt19937 rng(seed);
+	const Scene scene = makeScene(rng, 300);
+	LookAlikes t;
+	t.landmark.id = 1;
+	for (const auto& p : scene.points) t.landmark.points.emplace_back(p);
+	t.landmark.descriptors = scene.descriptors.clone();
+	t.image = view(scene, query, rng, 0.5);
+	t.inView = static_cast<int>(t.image.size());
+	std::normal_distribution<double> g;
+	std::uniform_real_distribution<float> u(0, 1);
+	for (int i = 0; i < t.inView; i += 2)
+	{
+		const int row = static_cast<int>(scenePointOf(scene, t.image.descriptors.row(i)));
+		cv::Mat copy = scene.descriptors.row(row).clone();
+		for (int d = 0; d < 128; d++) copy.at<float>(0, d) += static_cast<float>(2 * g(rng));
+		t.image.pixels.emplace_back(640 * u(rng), 480 * u(rng));
+		t.image.descriptors.push_back(copy);
+	}
+	return t;
+}
+}  // namespace
+
 TEST(LandmarkPipeline, GuidedRecognitionTakesBackThePointsALookAlikeFeatureTook)
 {
 	// Every other texture element in view appears a second time elsewhere in
@@ -919,25 +956,10 @@ TEST(LandmarkPipeline, GuidedRecognitionTakesBackThePointsALookAlikeFeatureTook)
 	int inView = 0, inliersUnguided = 0, inliersGuided = 0;
 	for (uint32_t seed = 1; seed <= 10; seed++)
 	{
-		std::mt19937 rng(seed);
-		const Scene scene = makeScene(rng, 300);
-		VisualLandmarkModel lm;  // the landmark frame is the world's
-		lm.id = 1;
-		for (const auto& p : scene.points) lm.points.emplace_back(p);
-		lm.descriptors = scene.descriptors.clone();
-		ImageFeatures image = view(scene, query, rng, 0.5);
-		const int n = static_cast<int>(image.size());
-		std::normal_distribution<double> g;
-		std::uniform_real_distribution<float> u(0, 1);
-		for (int i = 0; i < n; i += 2)
-		{
-			// The look-alike: the same texture element, another pixel noise.
-			const int row = static_cast<int>(scenePointOf(scene, image.descriptors.row(i)));
-			cv::Mat copy = scene.descriptors.row(row).clone();
-			for (int d = 0; d < 128; d++) copy.at<float>(0, d) += static_cast<float>(2 * g(rng));
-			image.pixels.emplace_back(640 * u(rng), 480 * u(rng));
-			image.descriptors.push_back(copy);
-		}
+		const LookAlikes t = withLookAlikes(seed, query);
+		const VisualLandmarkModel& lm = t.landmark;
+		const ImageFeatures& image = t.image;
+		const int n = t.inView;
 		const auto a = recognizeLandmark(image, lm, kMount, unguided);
 		const auto b = recognizeLandmark(image, lm, kMount, guided);
 		ASSERT_TRUE(a && b) << "seed " << seed;
@@ -973,24 +995,10 @@ TEST(LandmarkRecognizer, BothWaysLeavesOutThePointsThatResembleSeveralFeatures)
 	int outliersOneWay = 0, outliersBothWays = 0;
 	for (uint32_t seed = 1; seed <= 10; seed++)
 	{
-		std::mt19937 rng(seed);
-		const Scene scene = makeScene(rng, 300);
-		VisualLandmarkModel lm;
-		lm.id = 1;
-		for (const auto& p : scene.points) lm.points.emplace_back(p);
-		lm.descriptors = scene.descriptors.clone();
-		ImageFeatures image = view(scene, query, rng, 0.5);
-		const int n = static_cast<int>(image.size());
-		std::normal_distribution<double> g;
-		std::uniform_real_distribution<float> u(0, 1);
-		for (int i = 0; i < n; i += 2)
-		{
-			const int row = static_cast<int>(scenePointOf(scene, image.descriptors.row(i)));
-			cv::Mat copy = scene.descriptors.row(row).clone();
-			for (int d = 0; d < 128; d++) copy.at<float>(0, d) += static_cast<float>(2 * g(rng));
-			image.pixels.emplace_back(640 * u(rng), 480 * u(rng));
-			image.descriptors.push_back(copy);
-		}
+		const LookAlikes t = withLookAlikes(seed, query);
+		const VisualLandmarkModel& lm = t.landmark;
+		const ImageFeatures& image = t.image;
+		const int n = t.inView;
 		const int distinct = n / 2;  // the odd rows: no look-alike
 		const auto a = recognizeLandmark(image, lm, kMount, oneWay);
 		const auto b = recognizeLandmark(image, lm, kMount, bothWays);
