@@ -19,4 +19,12 @@ inline std::optional<mrpt::poses::CPose2D> odometryIncrement(
 	if (!mv || !mv->poseChange) return std::nullopt;
 	return mv->poseChange->getMeanVal();
 }
+
+/** The time of the first CActionRobotMovement2D's reading, if it has one. */
+inline std::optional<mrpt::Clock::time_point> odometryTime(const mrpt::obs::CActionCollection& actions)
+{
+	const auto mv = actions.getActionByClass<mrpt::obs::CActionRobotMovement2D>();
+	if (!mv || mv->timestamp == INVALID_TIMESTAMP) return std::nullopt;
+	return mv->timestamp;
+}
 }  // namespace vslam

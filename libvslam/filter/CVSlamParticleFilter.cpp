@@ -79,11 +79,13 @@ void CVSlamParticleFilter::setPriorMap(
 // --------------------------------------------------------------------------
 // Inputs
 // --------------------------------------------------------------------------
-void CVSlamParticleFilter::addOdometryIncrement(const se2::Pose& u)
+void CVSlamParticleFilter::addOdometryIncrement(
+	const se2::Pose& u, std::optional<mrpt::Clock::time_point> end)
 {
 	if (!std::isfinite(u.x) || !std::isfinite(u.y) || !std::isfinite(u.phi))
 		throw InputError("odometry increment is not finite (NaN or inf)");
 	m_odometry.add(u, m_motion.incrementCovariance(u));
+	if (end) m_odometry.setHeadingReference(*end);
 }
 
 void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
@@ -96,7 +98,8 @@ void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
 	try
 	{
 		if (action)
-			if (const auto u = odometryIncrement(*action)) addOdometryIncrement(u->asTPose());
+			if (const auto u = odometryIncrement(*action))
+				addOdometryIncrement(u->asTPose(), odometryTime(*action));
 		if (sf) processFrame(m_extractor.extract(*sf));
 	}
 	catch (const InputError& e)

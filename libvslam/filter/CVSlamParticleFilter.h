@@ -111,8 +111,12 @@ class CVSlamParticleFilter
 	 * caller it was bad input and why. */
 	std::string takeInputError();
 
-	/** Appends one odometry increment; throws InputError if not finite. */
-	void addOdometryIncrement(const se2::Pose& u);
+	/** Appends one odometry increment; throws InputError if not finite.
+	 * `end`, the time of the reading that ends it, if known: a heading
+	 * change measured from an image taken then can be fused (the first
+	 * image's, or one after an image that brought none). */
+	void addOdometryIncrement(
+		const se2::Pose& u, std::optional<mrpt::Clock::time_point> end = std::nullopt);
 	/** Processes the measurements and creation events of one frame; its
 	 * heading change, if any, first corrects the pending odometry. */
 	void processFrame(const FrameMeasurements& frame);

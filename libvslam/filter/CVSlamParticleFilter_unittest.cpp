@@ -542,6 +542,42 @@ TEST(CVSlamParticleFilter, HeadingChangesCorrectTheOdometryTheParticlesAreDrawnF
 	}
 }
 
+TEST(CVSlamParticleFilter, TimedOdometryLetsTheFirstImagesHeadingChangeBeFused)
+{
+	// Two odometry readings per image, turning 20% too much; the first image
+	// (t = 1) brings no heading change, each later one the true change since
+	// the image before. With the readings' times the change from the first
+	// image is fused, and only the odometry before it stays in the heading;
+	// without them the interval from the first image to the second is lost.
+	const se2::Pose trueStep{0.05, 0, 0.04}, reported{0.05, 0, 0.048};
+	const double errorPerReading = reported.phi - trueStep.phi;
+	for (const bool timed : {false, true})
+	{
+		auto o = manyParticles(500);
+		o.motion.sigma_R = 0.1;
+		o.headingChange.enabled = true;
+		mrpt::random::getRandomGenerator().randomize(5);
+		CVSlamParticleFilter f(o);
+		se2::Pose truth{0, 0, 0};
+		for (int reading = 1; reading <= 40; reading++)
+		{
+			truth = se2::compose(truth, trueStep);
+			const double t = 0.5 * reading;
+			f.addOdometryIncrement(
+				reported, timed ? std::optional(mrpt::Clock::fromDouble(t)) : std::nullopt);
+			if (reading % 2 || reading == 2) continue;  // no image, or the first
+			FrameMeasurements fr = frame(t, {});
+			fr.headingChange = HeadingChangeMeasurement{
+				mrpt::Clock::fromDouble(t - 1), mrpt::Clock::fromDouble(t), 2 * trueStep.phi, 1e-8};
+			f.processFrame(fr);
+		}
+		const double headingError = se2::wrap(f.meanPose().phi - truth.phi);
+		EXPECT_EQ(f.stats().headingChangesFused, timed ? 19u : 18u) << timed;
+		EXPECT_EQ(f.stats().headingChangesWithoutReference, timed ? 0u : 1u) << timed;
+		EXPECT_NEAR(headingError, (timed ? 2 : 4) * errorPerReading, 1e-3) << timed;
+	}
+}
+
 TEST(CVSlamParticleFilter, AHeadingChangeAcrossAnUpdateIsFusedIntoWhatRemains)
 {
 	// A frame with a landmark measurement draws the particles and resets the

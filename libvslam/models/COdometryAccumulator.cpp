@@ -1,5 +1,6 @@
 #include <libvslam/models/COdometryAccumulator.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace vslam;
@@ -13,35 +14,39 @@ void COdometryAccumulator::add(const se2::Pose& u, const Eigen::Matrix3d& cov)
 	m_distance += std::hypot(u.x, u.y);
 	m_rotation += std::abs(u.phi);
 	m_count++;
-	if (m_reference)
+	for (auto& r : m_references)
 	{
-		m_reference->cross = m_reference->cross * Ja.transpose();
-		m_reference->atCurrent = false;
+		r.cross = r.cross * Ja.transpose();
+		r.atCurrent = false;
 	}
 }
 
 void COdometryAccumulator::reset()
 {
-	std::optional<HeadingReference> reference;
-	if (m_reference && m_reference->atCurrent)
-		reference = HeadingReference{
-			m_reference->time, {0, 0, 0}, Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), true};
+	std::vector<HeadingReference> kept;
+	if (!m_references.empty() && m_references.back().atCurrent)
+		kept.push_back(HeadingReference{
+			m_references.back().time, {0, 0, 0}, Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), true});
 	*this = COdometryAccumulator();
-	m_reference = reference;
+	m_references = std::move(kept);
 }
 
 void COdometryAccumulator::setHeadingReference(mrpt::Clock::time_point t)
 {
-	m_reference = HeadingReference{t, m_mean, m_cov, m_cov, true};
+	if (!m_references.empty() && m_references.back().time == t) m_references.pop_back();
+	if (m_references.size() == kMaxReferences) m_references.erase(m_references.begin());
+	m_references.push_back(HeadingReference{t, m_mean, m_cov, m_cov, true});
 }
 
 COdometryAccumulator::HeadingFusion COdometryAccumulator::fuseHeadingChange(
 	mrpt::Clock::time_point from, mrpt::Clock::time_point to, double dphi, double variance, double gateChi2)
 {
 	HeadingFusion result = HeadingFusion::NoReference;
-	if (m_reference && m_reference->time == from)
+	const auto ref = std::find_if(m_references.rbegin(), m_references.rend(),
+		[&](const HeadingReference& r) { return r.time == from; });
+	if (ref != m_references.rend())
 	{
-		const auto& r = *m_reference;
+		const auto& r = *ref;
 		// h = phi_now - phi_ref: its variance and its covariance with the
 		// current pose (Cov(s, r) = cross^T).
 		const double S = m_cov(2, 2) + r.cov(2, 2) - 2 * r.cross(2, 2) + variance;
@@ -58,6 +63,7 @@ COdometryAccumulator::HeadingFusion COdometryAccumulator::fuseHeadingChange(
 			result = HeadingFusion::Fused;
 		}
 	}
+	m_references.clear();
 	setHeadingReference(to);
 	return result;
 }

@@ -13,16 +13,20 @@
  * the current pose, so a heading change from the reference to now is a
  * Kalman update of their joint Gaussian, h = phi_now - phi_reference. The
  * corrected increment (and its smaller covariance) is then what the
- * particles are drawn from. The reference survives reset() when it was set
- * after the last increment (the filter updates at the image that becomes
- * the next reference); otherwise part of the interval is already in the
- * particles and the next heading change cannot be fused.
+ * particles are drawn from. A reference is set where a heading change ends
+ * (the next one starts there) and, by the caller, at every odometry reading
+ * (an image that brought no heading change, such as the first one, can then
+ * still start one); the last kMaxReferences are kept. The newest reference
+ * survives reset() when it was set after the last increment (the filter
+ * updates at the image that becomes the next reference); the others are
+ * dropped there: part of their interval is already in the particles, and a
+ * heading change from them cannot be fused.
  */
 #include <libvslam/models/SE2.h>
 #include <mrpt/core/Clock.h>
 
 #include <Eigen/Core>
-#include <optional>
+#include <vector>
 
 namespace vslam
 {
@@ -32,8 +36,8 @@ class COdometryAccumulator
 	/** Appends increment u (in the frame where it starts) with covariance
 	 * cov (in that same frame). */
 	void add(const se2::Pose& u, const Eigen::Matrix3d& cov);
-	/** Starts a new increment; keeps a heading reference set since the
-	 * last add() (now at the new start, with no uncertainty). */
+	/** Starts a new increment; keeps the heading reference set since the
+	 * last add(), if any (now at the new start, with no uncertainty). */
 	void reset();
 
 	/** The composed increment since the last reset. */
@@ -53,13 +57,14 @@ class COdometryAccumulator
 		NoReference,  //!< no reference at `from` (first image, a gap, a reset in between)
 		Gated  //!< inconsistent with the odometry beyond the gate: not used
 	};
-	/** Marks the current pose, at time t, as where the next heading change
-	 * starts. */
+	/** Marks the current pose, at time t, as where a later heading change
+	 * may start (replacing a reference at the same time). */
 	void setHeadingReference(mrpt::Clock::time_point t);
 	/** Fuses the heading change dphi (rad, with `variance`) measured from
 	 * the reference at `from` to now, unless its normalized innovation
 	 * squared exceeds gateChi2 (1 degree of freedom); then the current pose
-	 * becomes the reference at `to` whatever the outcome. */
+	 * becomes the only reference, at `to`, whatever the outcome (heading
+	 * changes come in time order: none will start before `to`). */
 	HeadingFusion fuseHeadingChange(mrpt::Clock::time_point from, mrpt::Clock::time_point to, double dphi,
 		double variance, double gateChi2);
 
@@ -77,6 +82,9 @@ class COdometryAccumulator
 		Eigen::Matrix3d cross;  //!< Cov(reference, current)
 		bool atCurrent = true;  //!< nothing added since it was set
 	};
-	std::optional<HeadingReference> m_reference;
+	/** Oldest first; between two heading changes there are a few odometry
+	 * readings, so a short window covers a gap of several images. */
+	static constexpr size_t kMaxReferences = 16;
+	std::vector<HeadingReference> m_references;
 };
 }  // namespace vslam

@@ -198,6 +198,45 @@ TEST(COdometryAccumulator, AHeadingChangeNeedsItsReference)
 	EXPECT_EQ(acc.fuseHeadingChange(kT0, kT2, 0.05, 1e-4, kGate), F::NoReference);
 }
 
+TEST(COdometryAccumulator, AHeadingChangeMayStartAtAnyReferenceSinceTheLastUpdate)
+{
+	// References at every odometry reading: a heading change from an older
+	// one is the same Kalman update as with that reference alone.
+	using F = COdometryAccumulator::HeadingFusion;
+	const CMotionModel model = noisyOdometry();
+	const std::vector<se2::Pose> path{{0.1, 0, 0.3}, {0.1, 0, -0.2}, {0.05, 0, 0.4}, {0.1, 0, 0.1}};
+	const auto time = [](size_t k) { return mrpt::Clock::fromDouble(200.0 + k); };
+	COdometryAccumulator alone, every;
+	for (size_t k = 0; k < path.size(); k++)
+	{
+		alone.add(path[k], model.incrementCovariance(path[k]));
+		every.add(path[k], model.incrementCovariance(path[k]));
+		if (k == 0) alone.setHeadingReference(time(k));
+		every.setHeadingReference(time(k));
+	}
+	const double dphi = 0.3 + 0.01, R = 1e-4;
+	ASSERT_EQ(alone.fuseHeadingChange(time(0), time(9), dphi, R, kGate), F::Fused);
+	ASSERT_EQ(every.fuseHeadingChange(time(0), time(9), dphi, R, kGate), F::Fused);
+	EXPECT_NEAR(every.mean().x, alone.mean().x, 1e-15);
+	EXPECT_NEAR(every.mean().y, alone.mean().y, 1e-15);
+	EXPECT_NEAR(every.mean().phi, alone.mean().phi, 1e-15);
+	EXPECT_LT((every.cov() - alone.cov()).norm(), 1e-15);
+	// The fusion leaves one reference, at its end: the older ones are gone.
+	every.add(path[0], model.incrementCovariance(path[0]));
+	EXPECT_EQ(every.fuseHeadingChange(time(1), time(10), 0.3, R, kGate), F::NoReference);
+
+	// A window of references: the oldest of more than it holds is dropped.
+	COdometryAccumulator many;
+	for (size_t k = 0; k < 17; k++)
+	{
+		many.add(path[k % path.size()], model.incrementCovariance(path[k % path.size()]));
+		many.setHeadingReference(time(k));
+	}
+	EXPECT_EQ(many.fuseHeadingChange(time(0), time(20), 0.3, R, kGate), F::NoReference);
+	many.add(path[0], model.incrementCovariance(path[0]));
+	EXPECT_NE(many.fuseHeadingChange(time(20), time(21), path[0].phi, R, kGate), F::NoReference);
+}
+
 TEST(COdometryAccumulator, AHeadingChangeTheOdometryCannotExplainIsGated)
 {
 	COdometryAccumulator acc;
