@@ -500,6 +500,20 @@ TEST(CVSlamParticleFilter, MeasurementsThatAreNoKidnapEvidenceDeclareNoKidnap)
 	}
 }
 
+namespace
+{
+/** n particles, odometry with a large turn noise, heading changes fused or
+ * not; the random generator seeded. */
+TVSlamFilterOptions noisyTurns(size_t n, bool fuseHeadingChanges)
+{
+	auto o = manyParticles(n);
+	o.motion.sigma_R = 0.1;
+	o.headingChange.enabled = fuseHeadingChanges;
+	mrpt::random::getRandomGenerator().randomize(5);
+	return o;
+}
+}  // namespace
+
 TEST(CVSlamParticleFilter, HeadingChangesCorrectTheOdometryTheParticlesAreDrawnFrom)
 {
 	// Odometry that turns 20% too much; every frame also brings the true
@@ -508,11 +522,7 @@ TEST(CVSlamParticleFilter, HeadingChangesCorrectTheOdometryTheParticlesAreDrawnF
 	// estimate follows the true heading; without, the odometry's.
 	for (const bool fuse : {false, true})
 	{
-		auto o = manyParticles(1000);
-		o.motion.sigma_R = 0.1;
-		o.headingChange.enabled = fuse;
-		mrpt::random::getRandomGenerator().randomize(5);
-		CVSlamParticleFilter f(o);
+		CVSlamParticleFilter f(noisyTurns(1000, fuse));
 		se2::Pose truth{0, 0, 0};
 		const se2::Pose trueStep{0.05, 0, 0.04}, reported{0.05, 0, 0.048};
 		for (int k = 1; k <= 60; k++)
@@ -553,11 +563,7 @@ TEST(CVSlamParticleFilter, TimedOdometryLetsTheFirstImagesHeadingChangeBeFused)
 	const double errorPerReading = reported.phi - trueStep.phi;
 	for (const bool timed : {false, true})
 	{
-		auto o = manyParticles(500);
-		o.motion.sigma_R = 0.1;
-		o.headingChange.enabled = true;
-		mrpt::random::getRandomGenerator().randomize(5);
-		CVSlamParticleFilter f(o);
+		CVSlamParticleFilter f(noisyTurns(500, true));
 		se2::Pose truth{0, 0, 0};
 		for (int reading = 1; reading <= 40; reading++)
 		{
