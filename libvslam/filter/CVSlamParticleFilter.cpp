@@ -85,7 +85,8 @@ void CVSlamParticleFilter::addOdometryIncrement(
 	if (!std::isfinite(u.x) || !std::isfinite(u.y) || !std::isfinite(u.phi))
 		throw InputError("odometry increment is not finite (NaN or inf)");
 	m_odometry.add(u, m_motion.incrementCovariance(u));
-	if (end) m_odometry.setHeadingReference(*end);
+	// References serve only heading changes; without them they are work on every reading.
+	if (end && m_options.headingChange.enabled) m_odometry.setHeadingReference(*end);
 }
 
 void CVSlamParticleFilter::prediction_and_update_pfStandardProposal(
