@@ -102,6 +102,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		c, s, "heading_change_max_turn_deg", heading_change_max_turn, {0, 90, false, true});
 	heading_change_min_depth =
 		readDouble(c, s, "heading_change_min_depth", heading_change_min_depth, Range::positive());
+	heading_change_max_chord_z =
+		readDouble(c, s, "heading_change_max_chord_z", heading_change_max_chord_z, Range::nonNegative());
 	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
 	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
 	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
@@ -209,6 +211,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Heading change: largest turn between two images looked for [deg]");
 	c.write(s, "heading_change_min_depth", heading_change_min_depth, 30, 10,
 		"Heading change: nearest depth of a scene point [m] (bounds the parallax a fit may assume)");
+	c.write(s, "heading_change_max_chord_z", heading_change_max_chord_z, 30, 10,
+		"Heading change: drop it if the images put the chord this many stds off its arc (a sideways slip; 0: no test)");
 	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
 	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");
 	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");

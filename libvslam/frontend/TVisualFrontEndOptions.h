@@ -204,6 +204,9 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	/** Nearest depth a scene point may have, m: bounds the parallax that may
 	 * separate a match's bearing change from the heading change. */
 	double heading_change_min_depth = 0.2;
+	/** Drop a heading change whose images put the robot's chord more than
+	 * this many stds off its arc (a sideways slip; 0: no test). */
+	double heading_change_max_chord_z = 0;
 
 	// Map bounding
 	/** Most landmarks kept (0: no limit); beyond it the least useful go. */
