@@ -3,7 +3,6 @@
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/models/SE2.h>
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -67,7 +66,7 @@ double chordDirectionZ(const PlanarEpipolarModel& model, const std::vector<Eigen
 			n++;
 		}
 		if (n < 3 || !(H.determinant() > 0)) return 0;
-		const Eigen::Vector2d step = -H.ldlt().solve(g);
+		const Eigen::Vector2d step = -H.inverse() * g;
 		x += step;
 		if (step.norm() < 1e-9) break;
 	}
