@@ -14,10 +14,12 @@
 # over all. The front-end's log (accuracy against the truth) and, with
 # heading changes on, their CSV (--heading-csv) stay in OUT_DIR.
 #
-#   [ORACLE_KIND=K] scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
+#   [ORACLE_KIND=K] [ORACLE_SCALE_BIAS=B] scripts/oracle_study.sh BATCH_OUT SCENARIO OUT_DIR [FILTER_SEEDS] [-- --set KEY=VALUE ...]
 #
 # ORACLE_KIND (vslam-frontend --oracle-kind): all (default: every
-# measurement replaced by its truth), outliers, inliers, drop-outliers.
+# measurement replaced by its truth), outliers, inliers, drop-outliers,
+# scale (each landmark's scale error taken out; ORACLE_SCALE_BIAS, the
+# odometry's own scale error, is left in: --oracle-scale-bias).
 #
 # The --set options go to both the front-end and the filter runs (vslam
 # section keys to vslam, vslam_frontend keys to both). FILTER_SEEDS: 4.
@@ -34,6 +36,8 @@ while [[ $# -gt 0 && "$1" != "--" ]]; do ARGS+=("$1"); shift; done
 [[ ${#ARGS[@]} -ge 3 && ${#ARGS[@]} -le 4 ]] || { echo "$usage" >&2; exit 1; }
 BATCH="${ARGS[0]}" SCENARIO="${ARGS[1]}" OUT="${ARGS[2]}" SEEDS="${ARGS[3]:-4}"
 KIND="${ORACLE_KIND:-all}"
+BIAS_ARGS=()
+[[ -n "${ORACLE_SCALE_BIAS:-}" ]] && BIAS_ARGS=(--oracle-scale-bias "$ORACLE_SCALE_BIAS")
 SETS=("$@")
 FRONTEND_SETS=()
 for ((i = 0; i < ${#SETS[@]}; i++)); do
@@ -75,10 +79,10 @@ for rawlog in "${DATA[@]}"; do
   dir="$(dirname "$rawlog")" name="$(basename "$(dirname "$rawlog")")"
   gt="$(realpath "$dir/sim_groundtruth.tum")"
   measured="$OUT/${SCENARIO}_${name}_$KEY.rawlog" oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle.rawlog"
-  [[ "$KIND" == all ]] || oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle_$KIND.rawlog"
+  [[ "$KIND" == all ]] || oracle="$OUT/${SCENARIO}_${name}_${KEY}_oracle_$KIND${ORACLE_SCALE_BIAS:+_$ORACLE_SCALE_BIAS}.rawlog"
   if [[ ! -s "$oracle" ]]; then
     "$BIN/vslam-frontend" "$rawlog" "$measured" --config "$INI" "${FRONTEND_SETS[@]}" \
-      --ground-truth "$gt" --oracle-rawlog "$oracle.part" --oracle-kind "$KIND" \
+      --ground-truth "$gt" --oracle-rawlog "$oracle.part" --oracle-kind "$KIND" "${BIAS_ARGS[@]}" \
       --heading-csv "$OUT/${SCENARIO}_${name}_$KEY.heading.csv" > "$OUT/${SCENARIO}_${name}_$KEY.log"
     mv "$oracle.part" "$oracle"
   fi

@@ -23,8 +23,11 @@
  * measurement error, which separates the front-end's share of a run's
  * error from the filter's. --oracle-kind splits that share: `all` (the
  * default) replaces every measurement, `outliers` only those beyond 3 sigma
- * of Sigma_vis, `inliers` only those within, and `drop-outliers` keeps the
- * measured values but removes those beyond 3 sigma. With
+ * of Sigma_vis, `inliers` only those within, `drop-outliers` keeps the
+ * measured values but removes those beyond 3 sigma, and `scale` keeps them
+ * too but takes each landmark's scale error out of its measurements (fitted
+ * against the truth; --oracle-scale-bias B leaves the odometry's own scale
+ * error B in, which no estimate from the odometry can see). With
  * [vslam_frontend] heading_change, it also prints the heading changes'
  * errors, their calibration (error over predicted std) and the odometry's
  * error over the same intervals; --heading-csv writes every heading change
@@ -37,7 +40,9 @@
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/eval/HeadingChangeAccuracy.h>
+#include <libvslam/eval/LandmarkScaleOracle.h>
 #include <libvslam/eval/MeasurementAccuracy.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/frontend/ImageBufferAllocation.h>
@@ -55,6 +60,7 @@
 #include <cstdio>
 #include <map>
 #include <iostream>
+#include <optional>
 
 namespace
 {
@@ -150,7 +156,8 @@ enum class OracleKind
 	All,
 	Outliers,
 	Inliers,
-	DropOutliers
+	DropOutliers,
+	Scale
 };
 
 OracleKind parseOracleKind(const std::string& s)
@@ -159,18 +166,18 @@ OracleKind parseOracleKind(const std::string& s)
 	if (s == "outliers") return OracleKind::Outliers;
 	if (s == "inliers") return OracleKind::Inliers;
 	if (s == "drop-outliers") return OracleKind::DropOutliers;
-	throw std::invalid_argument("--oracle-kind '" + s + "': expected all, outliers, inliers or drop-outliers");
+	if (s == "scale") return OracleKind::Scale;
+	throw std::invalid_argument("--oracle-kind '" + s + "': expected all, outliers, inliers, drop-outliers or scale");
 }
 
-/** Replaces the landmark measurements in `steps` that `kind` names by their
- * truth (the landmark frame's true pose seen from the robot's true pose),
- * or drops them (drop-outliers); those without truth are dropped. Outliers:
- * beyond 3 sigma of `sigma` from the truth. */
-void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, const std::string& groundTruthFile,
-	OracleKind kind, const vslam::CMeasurementExtractor::TVisualOptions& sigma)
+/** Every landmark measurement in `steps` with its truth and whether it is
+ * beyond 3 sigma of `sigma` from it: f(measurement, truth, outlier) returns
+ * whether to keep it. Those without truth are dropped. */
+template <typename F>
+void forEachMeasurementWithTruth(std::vector<vslam::ActionFramePair>& steps, const vslam::Trajectory& truth,
+	const vslam::CMeasurementExtractor::TVisualOptions& sigma, F&& f)
 {
 	using namespace vslam;
-	const Trajectory truth = readTrajectory(groundTruthFile);
 	std::map<int64_t, double> createdAt;
 	for (auto& [action, sf] : steps)
 	{
@@ -188,10 +195,7 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 				if (!z) continue;
 				const bool outlier =
 					beyondThreeSigma({m->relPose.x(), m->relPose.y(), m->relPose.phi()}, *z, sigma);
-				if (kind == OracleKind::DropOutliers && outlier) continue;
-				const bool replace = kind == OracleKind::All || (kind == OracleKind::Outliers && outlier) ||
-					(kind == OracleKind::Inliers && !outlier);
-				if (replace) m->relPose = mrpt::poses::CPose2D(z->x, z->y, z->phi);
+				if (!f(*m, *z, outlier)) continue;
 			}
 			kept.push_back(o);
 		}
@@ -200,10 +204,66 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 	}
 }
 
+vslam::se2::Pose planarMount(const vslam::CObservationVisualLandmark& m)
+{
+	return {m.sensorPoseOnRobot.x(), m.sensorPoseOnRobot.y(), m.sensorPoseOnRobot.yaw()};
+}
+
+/** Replaces the landmark measurements in `steps` that `kind` names by their
+ * truth (the landmark frame's true pose seen from the robot's true pose),
+ * or drops them (drop-outliers), or (scale) takes each landmark's scale
+ * error out of all its measurements: the scale fitted over those within 3
+ * sigma against the truth (LandmarkScaleOracle.h), over 1 + `scaleBias`
+ * (the odometry's own scale error, which no estimate from it can see, is
+ * left in). Those without truth are dropped. Outliers: beyond 3 sigma of
+ * `sigma` from the truth. */
+void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, const std::string& groundTruthFile,
+	OracleKind kind, const vslam::CMeasurementExtractor::TVisualOptions& sigma, double scaleBias)
+{
+	using namespace vslam;
+	const Trajectory truth = readTrajectory(groundTruthFile);
+	std::map<int64_t, double> scaleOf;
+	if (kind == OracleKind::Scale)
+	{
+		std::map<int64_t, std::vector<std::pair<se2::Pose, se2::Pose>>> inliersOf;
+		std::map<int64_t, se2::Pose> mountOf;
+		forEachMeasurementWithTruth(steps, truth, sigma,
+			[&](const CObservationVisualLandmark& m, const se2::Pose& z, bool outlier) {
+				if (!outlier)
+					inliersOf[m.landmarkID].emplace_back(
+						se2::Pose{m.relPose.x(), m.relPose.y(), m.relPose.phi()}, z);
+				mountOf[m.landmarkID] = planarMount(m);
+				return true;
+			});
+		for (const auto& [id, pairs] : inliersOf)
+			scaleOf[id] = fitLandmarkScale(pairs, mountOf[id]) / (1 + scaleBias);
+	}
+	forEachMeasurementWithTruth(steps, truth, sigma,
+		[&](CObservationVisualLandmark& m, const se2::Pose& z, bool outlier) {
+			if (kind == OracleKind::DropOutliers && outlier) return false;
+			if (kind == OracleKind::Scale)
+			{
+				const auto k = scaleOf.find(m.landmarkID);
+				if (k != scaleOf.end())
+				{
+					const se2::Pose r = withoutScale(
+						{m.relPose.x(), m.relPose.y(), m.relPose.phi()}, planarMount(m), k->second);
+					m.relPose = mrpt::poses::CPose2D(r.x, r.y, r.phi);
+				}
+				return true;
+			}
+			const bool replace = kind == OracleKind::All || (kind == OracleKind::Outliers && outlier) ||
+				(kind == OracleKind::Inliers && !outlier);
+			if (replace) m.relPose = mrpt::poses::CPose2D(z.x, z.y, z.phi);
+			return true;
+		});
+}
+
 const char* kUsage =
 	"Usage: vslam-frontend IN.rawlog OUT.rawlog [--config INI] [--set SECTION.KEY=VALUE ...]\n"
 	"                      [--ground-truth TRUE_PATH [--accuracy-csv FILE] [--heading-csv FILE]\n"
-	"                       [--oracle-rawlog FILE [--oracle-kind all|outliers|inliers|drop-outliers]]]\n"
+	"                       [--oracle-rawlog FILE [--oracle-kind all|outliers|inliers|drop-outliers|scale]\n"
+	"                        [--oracle-scale-bias B]]]\n"
 	"       vslam-frontend --print-default-config\n";
 }
 
@@ -217,6 +277,7 @@ int main(int argc, const char** argv)
 		std::vector<config::Override> overrides;
 		std::string iniFile, groundTruthFile, csvFile, oracleFile, headingCsvFile;
 		OracleKind oracleKind = OracleKind::All;
+		std::optional<double> oracleScaleBias;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
@@ -231,7 +292,8 @@ int main(int argc, const char** argv)
 				return 0;
 			}
 			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv" ||
-					a == "--oracle-rawlog" || a == "--oracle-kind" || a == "--heading-csv") &&
+					a == "--oracle-rawlog" || a == "--oracle-kind" || a == "--oracle-scale-bias" ||
+					a == "--heading-csv") &&
 				i + 1 >= argc)
 				throw std::invalid_argument(a + " needs a value");
 			if (a == "--set")
@@ -248,6 +310,11 @@ int main(int argc, const char** argv)
 				oracleFile = argv[++i];
 			else if (a == "--oracle-kind")
 				oracleKind = parseOracleKind(argv[++i]);
+			else if (a == "--oracle-scale-bias")
+			{
+				oracleScaleBias = numberArgument(a, argv[++i]);
+				if (!(*oracleScaleBias > -1)) throw std::invalid_argument("--oracle-scale-bias must be above -1");
+			}
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "'");
 			else
@@ -256,6 +323,8 @@ int main(int argc, const char** argv)
 		if (positional.size() != 2) throw std::invalid_argument("expected IN.rawlog OUT.rawlog");
 		if ((!csvFile.empty() || !oracleFile.empty() || !headingCsvFile.empty()) && groundTruthFile.empty())
 			throw std::invalid_argument("--accuracy-csv, --heading-csv and --oracle-rawlog need --ground-truth");
+		if (oracleScaleBias && (oracleFile.empty() || oracleKind != OracleKind::Scale))
+			throw std::invalid_argument("--oracle-scale-bias goes with --oracle-rawlog and --oracle-kind scale");
 		const TVisualFrontEndOptions options = loadFrontEndOptions(iniFile, overrides);
 		// Sigma_vis and the pre-filter of the INI and the --set overrides, for
 		// the accuracy figures; every vslam key checked before the long run.
@@ -341,7 +410,7 @@ int main(int argc, const char** argv)
 			printHeadingChangeAccuracy(headingRecords, groundTruthFile, headingCsvFile);
 		if (!oracleFile.empty())
 		{
-			replaceMeasurementsWithTruth(steps, groundTruthFile, oracleKind, filter.visual);
+			replaceMeasurementsWithTruth(steps, groundTruthFile, oracleKind, filter.visual, oracleScaleBias.value_or(0));
 			writeActionFrameRawlog(oracleFile, steps);
 			std::cout << "vslam-frontend: the same with true measurements -> " << oracleFile << "\n";
 		}

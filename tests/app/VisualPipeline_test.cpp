@@ -3,6 +3,7 @@
  * with the front-end in the loop, and a missing or corrupt image. Images come from
  * the textured-room fixture (tests/support/RoomImageRawlog.h). */
 #include <gtest/gtest.h>
+#include <libvslam/eval/LandmarkScaleOracle.h>
 #include <libvslam/eval/Trajectory.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/RawlogWriting.h>
@@ -153,6 +154,7 @@ struct RecordedMeasurement
 	double t = 0;
 	int64_t id = -1;
 	mrpt::poses::CPose2D z;
+	vslam::se2::Pose mount{0, 0, 0};  //!< the camera's on the robot, planar
 };
 
 /** The landmark measurements of a measurement rawlog, and when each
@@ -166,7 +168,8 @@ std::vector<RecordedMeasurement> readMeasurements(const std::string& file, std::
 		for (const auto& o : *step.sf)
 		{
 			if (const auto* m = dynamic_cast<const vslam::CObservationVisualLandmark*>(o.get()))
-				out.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID, m->relPose});
+				out.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID, m->relPose,
+					{m->sensorPoseOnRobot.x(), m->sensorPoseOnRobot.y(), m->sensorPoseOnRobot.yaw()}});
 			else if (const auto* c = dynamic_cast<const vslam::CObservationLandmarkCreated*>(o.get()))
 				createdAt[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
 		}
@@ -296,6 +299,54 @@ TEST(VisualPipeline, OracleKindsReplaceOrDropOnlyTheMeasurementsBeyondOrWithinTh
 	const auto bad = runCommand(fe + " --oracle-rawlog " + quoted(dir.file("x")) + " --oracle-kind some");
 	EXPECT_EQ(bad.exitCode, 1) << bad.output;
 	EXPECT_NE(bad.output.find("--oracle-kind 'some'"), std::string::npos) << bad.output;
+}
+
+TEST(VisualPipeline, ScaleOracleTakesEachLandmarksFittedScaleOutOfAllItsMeasurements)
+{
+	TempDir dir;
+	const std::string rawlog = writeOracleTestRawlog(dir);
+	const std::string truthFile = vslam::siblingFile(rawlog, "_groundtruth.tum");
+	const std::string fe = quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")) +
+		" --ground-truth " + quoted(truthFile) + " --oracle-kind scale";
+	const auto r = runCommand(fe + " --oracle-rawlog " + quoted(dir.file("scale.rawlog")) + " --oracle-scale-bias 0.02");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::map<int64_t, double> createdAt, unused;
+	const auto measured = readMeasurements(dir.file("m.rawlog"), createdAt);
+	const auto oracle = readMeasurements(dir.file("scale.rawlog"), unused);
+	ASSERT_EQ(oracle.size(), measured.size());
+	const auto truth = vslam::readTrajectory(truthFile);
+	// Each landmark's scale, fitted here over the measurements within 3 sigma
+	// of the default Sigma_vis (0.09 m, 2.5 deg).
+	std::map<int64_t, std::vector<std::pair<vslam::se2::Pose, vslam::se2::Pose>>> inliers;
+	const auto pose = [](const mrpt::poses::CPose2D& p) { return vslam::se2::Pose{p.x(), p.y(), p.phi()}; };
+	for (const auto& m : measured)
+	{
+		const auto expected = trueMeasurement(truth, m.t, createdAt.at(m.id));
+		ASSERT_TRUE(expected);
+		if (std::abs(m.z.x() - expected->x()) <= 0.27 && std::abs(m.z.y() - expected->y()) <= 0.27 &&
+			std::abs(mrpt::math::wrapToPi(m.z.phi() - expected->phi())) <= 7.5 * M_PI / 180)
+			inliers[m.id].emplace_back(pose(m.z), pose(*expected));
+	}
+	std::map<int64_t, double> scaleOf;
+	for (const auto& [id, pairs] : inliers) scaleOf[id] = vslam::fitLandmarkScale(pairs, measured.front().mount);
+	size_t rescaled = 0;
+	for (size_t i = 0; i < measured.size(); i++)
+	{
+		EXPECT_EQ(oracle[i].t, measured[i].t);
+		ASSERT_EQ(oracle[i].id, measured[i].id);
+		// The heading is not a length: it stays as measured.
+		EXPECT_NEAR(mrpt::math::wrapToPi(oracle[i].z.phi() - measured[i].z.phi()), 0, 1e-9);
+		const double k = scaleOf.at(measured[i].id) / 1.02;  // the odometry's own 2% left in
+		const auto want = vslam::withoutScale(pose(measured[i].z), measured[i].mount, k);
+		EXPECT_NEAR(oracle[i].z.x(), want.x, 1e-6) << i;
+		EXPECT_NEAR(oracle[i].z.y(), want.y, 1e-6) << i;
+		rescaled += std::abs(k - 1) > 1e-3;
+	}
+	EXPECT_GT(rescaled, measured.size() / 2);  // the landmarks' scales are not 1 here
+
+	const auto stray = runCommand(fe + " --oracle-rawlog " + quoted(dir.file("x")) + " --oracle-kind all --oracle-scale-bias 0.01");
+	EXPECT_EQ(stray.exitCode, 1) << stray.output;
+	EXPECT_NE(stray.output.find("--oracle-scale-bias goes with"), std::string::npos) << stray.output;
 }
 
 namespace
