@@ -34,13 +34,13 @@
  * with its truth.
  */
 #include <libvslam/app/CVSlamApp.h>
+#include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
-#include <libvslam/app/ToolArguments.h>
 #include <libvslam/eval/HeadingChangeAccuracy.h>
 #include <libvslam/eval/LandmarkScaleOracle.h>
 #include <libvslam/eval/MeasurementAccuracy.h>
@@ -236,7 +236,10 @@ void replaceMeasurementsWithTruth(std::vector<vslam::ActionFramePair>& steps, co
 				return true;
 			});
 		for (const auto& [id, pairs] : inliersOf)
-			scaleOf[id] = fitLandmarkScale(pairs, mountOf[id]) / (1 + scaleBias);
+		{
+			const double k = fitLandmarkScale(pairs, mountOf[id]);
+			if (k > 0) scaleOf[id] = k / (1 + scaleBias);  // else no scale: left as measured
+		}
 	}
 	forEachMeasurementWithTruth(steps, truth, sigma,
 		[&](CObservationVisualLandmark& m, const se2::Pose& z, bool outlier) {
@@ -412,7 +415,9 @@ int main(int argc, const char** argv)
 		{
 			replaceMeasurementsWithTruth(steps, groundTruthFile, oracleKind, filter.visual, oracleScaleBias.value_or(0));
 			writeActionFrameRawlog(oracleFile, steps);
-			std::cout << "vslam-frontend: the same with true measurements -> " << oracleFile << "\n";
+			std::cout << "vslam-frontend: the same with "
+					  << (oracleKind == OracleKind::Scale ? "the landmarks' scale errors taken out" : "true measurements")
+					  << " -> " << oracleFile << "\n";
 		}
 		return 0;
 	});

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <libvslam/eval/LandmarkScaleOracle.h>
 
+#include <cmath>
 #include <random>
 
 using namespace vslam;
