@@ -19,11 +19,14 @@ BestBinFirstDescriptorIndex::~BestBinFirstDescriptorIndex() = default;
 void BestBinFirstDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
 {
 	Level added;
-	added.codes = m_codec.toMatchingSpace(siftDescriptors);
+	// Projected codes stay signed bytes (a quarter of the floats they
+	// decode to); the tree reads them as kProjectedStep x code.
+	added.codes = m_codec.kind() == DescriptorCodec::Kind::Projected ? m_codec.encode(siftDescriptors)
+																	 : m_codec.toMatchingSpace(siftDescriptors);
 	added.firstRow = firstRow;
 	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	Level& last = m_levels.back();
-	last.index = std::make_unique<BestBinFirstTree>(last.codes);
+	last.index = std::make_unique<BestBinFirstTree>(last.codes, DescriptorCodec::kProjectedStep);
 	last.codes.release();  // the tree holds a copy, leaf by leaf
 }
 

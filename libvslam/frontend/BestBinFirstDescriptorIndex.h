@@ -31,7 +31,9 @@ class BestBinFirstDescriptorIndex : public DescriptorIndex
    private:
 	struct Level
 	{
-		cv::Mat codes;  //!< CV_32F, one row per descriptor, until the tree holds them
+		/** One row per descriptor, until the tree holds them: the codec's
+		 * CV_8S codes if it projects, else CV_32F values. */
+		cv::Mat codes;
 		size_t firstRow = 0;  //!< levels hold consecutive rows
 		std::unique_ptr<BestBinFirstTree> index;
 		int rows() const { return index ? index->rows() : codes.rows; }

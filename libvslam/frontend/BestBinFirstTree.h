@@ -14,7 +14,12 @@
  * nearest first until the budget is spent.
  *
  * The tree keeps its own copy of the rows, leaf by leaf, so a leaf's rows
- * are read from one block of memory.
+ * are read from one block of memory. Rows may be given as floats or as
+ * signed-byte codes standing for `unit` x code (the projected descriptor
+ * codes of DescriptorCodec.h): a quarter of the memory, and for codes of
+ * up to 64 dimensions with a power-of-two unit the same squared distances
+ * to the last bit (every term and partial sum is then an integer multiple
+ * of unit^2 below 2^24 unit^2, exact in float whatever the order).
  */
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -58,9 +63,10 @@ class BestBinFirstTree
 		std::vector<float> offsets;  //!< the cell being descended, one per dimension
 	};
 
-	/** Over a copy of `rows` (CV_32F, at least one row); search() offers
-	 * rows by their number in `rows`. */
-	explicit BestBinFirstTree(const cv::Mat& rows);
+	/** Over a copy of `rows` (at least one row): CV_32F values, or CV_8S
+	 * codes for the values unit x code. search() offers rows by their
+	 * number in `rows`; queries are values (floats). */
+	explicit BestBinFirstTree(const cv::Mat& rows, float unit = 1.f);
 
 	/** Offers rows to `nearest` (offer(int row, float squaredDistance);
 	 * worstDist(): the squared distance beyond which no row is wanted),
@@ -70,7 +76,7 @@ class BestBinFirstTree
 	void search(const float* query, int maxCompared, Nearest& nearest, Scratch& scratch) const;
 
 	int rows() const { return m_rows.rows; }
-	/** The rows as they were given. */
+	/** The rows as they were given (same type). */
 	cv::Mat rowsInInputOrder() const;
 	/** Memory held: the rows, nodes and row numbers. */
 	size_t bytes() const
@@ -90,12 +96,39 @@ class BestBinFirstTree
 	/** To the row stored at `at` (leaf order). */
 	float squaredDistance(const float* query, int32_t at) const
 	{
+		if (m_rows.depth() == CV_8S) return squaredDistanceToCode(query, m_rows.ptr<int8_t>(at));
 		using Vector = Eigen::Map<const Eigen::VectorXf>;
 		return (Vector(query, m_dims) - Vector(m_rows.ptr<float>(at), m_dims)).squaredNorm();
+	}
+	float squaredDistanceToCode(const float* query, const int8_t* code) const
+	{
+		if (m_dims == kCommonDims)
+		{
+			// The default search codes' width as a constant: the codes are
+			// converted, then Eigen's vectorized sum (any order is exact).
+			Eigen::Matrix<float, kCommonDims, 1> v;
+			for (int d = 0; d < kCommonDims; d++) v[d] = m_unit * static_cast<float>(code[d]);
+			return (Eigen::Map<const Eigen::Matrix<float, kCommonDims, 1>>(query) - v).squaredNorm();
+		}
+		float sum = 0;
+		for (int d = 0; d < m_dims; d++)
+		{
+			const float diff = query[d] - m_unit * static_cast<float>(code[d]);
+			sum += diff * diff;
+		}
+		return sum;
+	}
+	static constexpr int kCommonDims = 16;
+	/** Value of element `dim` of row `row` of m_rows. */
+	float value(int32_t row, int dim) const
+	{
+		return m_rows.depth() == CV_8S ? m_unit * static_cast<float>(m_rows.ptr<int8_t>(row)[dim])
+									   : m_rows.ptr<float>(row)[dim];
 	}
 
 	cv::Mat m_rows;  //!< leaf order: stored row i is input row m_order[i]
 	int m_dims;
+	float m_unit;  //!< value of one unit of a CV_8S code
 	std::vector<Node> m_nodes;  //!< preorder; the root first
 	std::vector<int32_t> m_order;  //!< row numbers, grouped by leaf
 };

@@ -1,7 +1,8 @@
 /** BestBinFirstTree against brute force: exact when the budget covers the
  * rows, its copy of the rows given back in their order (also with repeated split dimensions, duplicate rows and a single
  * row), the budget honoured, and the nearest cells visited first: with a
- * budget of a few leaves it still finds most true nearest neighbours. */
+ * budget of a few leaves it still finds most true nearest neighbours.
+ * Signed-byte codes search exactly as the floats they stand for. */
 #include <gtest/gtest.h>
 #include <libvslam/frontend/BestBinFirstTree.h>
 
@@ -93,6 +94,45 @@ TEST(BestBinFirstTree, DuplicateRowsAndASingleRow)
 	EXPECT_EQ(alone.row, 0);
 	EXPECT_THROW(BestBinFirstTree(cv::Mat(0, 3, CV_32F)), std::invalid_argument);
 	EXPECT_THROW(BestBinFirstTree(cv::Mat(4, 3, CV_64F)), std::invalid_argument);
+	EXPECT_THROW(BestBinFirstTree(cv::Mat(4, 3, CV_8U)), std::invalid_argument);
+}
+
+TEST(BestBinFirstTree, SignedByteCodesSearchAsTheFloatsTheyStandFor)
+{
+	// Projected descriptor codes (DescriptorCodec.h): 16 signed bytes,
+	// value = 2 x code. Queries are values too (image descriptors pass
+	// through the same codec), here noisy copies of stored rows.
+	constexpr float kUnit = 2.f;
+	std::mt19937 rng(5);
+	std::normal_distribution<float> g(0, 40);
+	cv::Mat codes(5000, 16, CV_8S);
+	for (int r = 0; r < codes.rows; r++)
+		for (int c = 0; c < codes.cols; c++) codes.at<int8_t>(r, c) = cv::saturate_cast<int8_t>(g(rng));
+	cv::Mat values;
+	codes.convertTo(values, CV_32F, kUnit);
+	const BestBinFirstTree onCodes(codes, kUnit), onValues(values);
+	EXPECT_EQ(onCodes.rowsInInputOrder().type(), CV_8S);
+	EXPECT_EQ(cv::norm(onCodes.rowsInInputOrder(), codes, cv::NORM_INF), 0);
+	// The same tree over a quarter of the rows' memory.
+	EXPECT_EQ(onValues.bytes() - onCodes.bytes(), codes.total() * (sizeof(float) - 1));
+
+	BestBinFirstTree::Scratch scratch;
+	std::uniform_int_distribution<int> pick(0, codes.rows - 1);
+	std::normal_distribution<float> noise(0, 6);
+	for (int q = 0; q < 500; q++)
+	{
+		cv::Mat query = values.row(pick(rng)).clone();
+		for (int c = 0; c < 16; c++) query.at<float>(0, c) = kUnit * std::round((query.at<float>(0, c) + noise(rng)) / kUnit);
+		for (int budget : {16, 128, codes.rows})
+		{
+			NearestRow a, b;
+			onCodes.search(query.ptr<float>(), budget, a, scratch);
+			onValues.search(query.ptr<float>(), budget, b, scratch);
+			ASSERT_EQ(a.row, b.row) << "query " << q << ", budget " << budget;
+			ASSERT_EQ(a.dist, b.dist) << "to the last bit";
+			ASSERT_EQ(a.offered, b.offered) << "the same cells visited";
+		}
+	}
 }
 
 TEST(BestBinFirstTree, HonoursTheBudgetAndVisitsTheNearestCellsFirst)

@@ -5,6 +5,7 @@
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 using namespace vslam;
@@ -23,20 +24,32 @@ std::unique_ptr<DescriptorIndex> DescriptorIndex::create(
 void DescriptorIndex::add(int64_t owner, const cv::Mat& siftDescriptors)
 {
 	if (siftDescriptors.rows == 0) return;
-	const size_t first = m_owner.size();
-	m_owner.insert(m_owner.end(), static_cast<size_t>(siftDescriptors.rows), owner);
+	const size_t first = rows();
+	m_blocks.emplace_back(first, owner);
 	m_removed.insert(m_removed.end(), static_cast<size_t>(siftDescriptors.rows), 0);
 	doAdd(first, siftDescriptors);
 }
 
 void DescriptorIndex::remove(int64_t owner)
 {
-	for (size_t i = 0; i < m_owner.size(); i++)
-		if (m_owner[i] == owner && !m_removed[i])
-		{
-			m_removed[i] = 1;
-			m_removedRows++;
-		}
+	for (size_t b = 0; b < m_blocks.size(); b++)
+	{
+		if (m_blocks[b].second != owner) continue;
+		const size_t end = b + 1 < m_blocks.size() ? m_blocks[b + 1].first : rows();
+		for (size_t i = m_blocks[b].first; i < end; i++)
+			if (!m_removed[i])
+			{
+				m_removed[i] = 1;
+				m_removedRows++;
+			}
+	}
+}
+
+int64_t DescriptorIndex::ownerOf(size_t row) const
+{
+	const auto after = std::upper_bound(m_blocks.begin(), m_blocks.end(), row,
+		[](size_t r, const std::pair<size_t, int64_t>& block) { return r < block.first; });
+	return std::prev(after)->second;
 }
 
 std::vector<NearestLandmarkRows> DescriptorIndex::twoNearest(const cv::Mat& queries) const
@@ -49,7 +62,7 @@ std::vector<NearestLandmarkRows> DescriptorIndex::twoNearest(const cv::Mat& quer
 		out[q].count = static_cast<int>(found[q].count());
 		for (int i = 0; i < out[q].count; i++)
 		{
-			out[q].owner[i] = m_owner[found[q].row(i)];
+			out[q].owner[i] = ownerOf(found[q].row(i));
 			out[q].dist[i] = found[q].dist(i);
 		}
 	}
@@ -58,7 +71,7 @@ std::vector<NearestLandmarkRows> DescriptorIndex::twoNearest(const cv::Mat& quer
 
 size_t DescriptorIndex::bytes() const
 {
-	return m_owner.capacity() * sizeof(int64_t) + m_removed.capacity() + doBytes();
+	return m_blocks.capacity() * sizeof(m_blocks[0]) + m_removed.capacity() + doBytes();
 }
 
 void DescriptorIndex::TwoNearestLiveRows::offer(size_t row, float dist)

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace vslam
@@ -54,7 +55,7 @@ class DescriptorIndex
 	/** For each row of `queries` (the codec's matching space, CV_32F). */
 	std::vector<NearestLandmarkRows> twoNearest(const cv::Mat& queries) const;
 
-	size_t rows() const { return m_owner.size(); }
+	size_t rows() const { return m_removed.size(); }
 	size_t removedRows() const { return m_removedRows; }
 	/** Memory held: codes, bookkeeping and the search structure. */
 	size_t bytes() const;
@@ -89,8 +90,12 @@ class DescriptorIndex
 	bool anyRemoved() const { return m_removedRows > 0; }
 
    private:
-	std::vector<int64_t> m_owner;  //!< landmark of each row
-	std::vector<char> m_removed;  //!< the row's landmark was removed
+	/** Each add()'s rows are one block of one landmark: (first row, owner),
+	 * in row order, so a row's owner costs a binary search and no memory
+	 * per row. */
+	std::vector<std::pair<size_t, int64_t>> m_blocks;
+	int64_t ownerOf(size_t row) const;
+	std::vector<char> m_removed;  //!< the row's landmark was removed (read per row searched)
 	size_t m_removedRows = 0;
 };
 }  // namespace vslam

@@ -93,21 +93,30 @@ class DefaultDescriptorIndex : public DescriptorIndexScenario
 };
 
 /** Exact settings (eps 0, or more checks than rows): the brute-force answer,
- * while landmarks are added one by one (rebuilds, merges) and removed. */
+ * while landmarks of different sizes are added one by one (rebuilds,
+ * merges), some in two blocks (a landmark added again), and removed. */
 TEST_P(ExactDescriptorIndex, GivesTheBruteForceNeighbours)
 {
 	std::mt19937 rng(7);
 	const DescriptorCodec codec(DescriptorCodec::Kind::Projected, 16);
 	auto index = make(codec);
 	std::map<int64_t, cv::Mat> live;
+	size_t removedRows = 0;
 	for (int64_t id = 1; id <= 37; id++)
 	{
-		const cv::Mat sift = randomDescriptors(rng, kRowsPerLandmark);
+		const cv::Mat sift = randomDescriptors(rng, 10 + static_cast<int>(id * 7 % 50));
 		index->add(id, sift);
 		live[id] = codec.toMatchingSpace(sift);
+		if (id % 9 == 0)
+		{
+			const cv::Mat more = randomDescriptors(rng, 5);
+			index->add(id, more);
+			cv::vconcat(live[id], codec.toMatchingSpace(more), live[id]);
+		}
 		if (id % 5 == 0)
 		{
 			index->remove(id - 3);
+			removedRows += static_cast<size_t>(live[id - 3].rows);
 			live.erase(id - 3);
 		}
 		if (id % 6 != 0) continue;
@@ -121,9 +130,10 @@ TEST_P(ExactDescriptorIndex, GivesTheBruteForceNeighbours)
 			EXPECT_NEAR(found[q].dist[0], expected.dist[0], 1e-5 * expected.dist[0]) << "landmarks " << id << ", query " << q;
 			EXPECT_NEAR(found[q].dist[1], expected.dist[1], 1e-5 * expected.dist[1]);
 			EXPECT_EQ(found[q].owner[0], expected.owner[0]);
+			EXPECT_EQ(found[q].owner[1], expected.owner[1]);
 		}
 	}
-	EXPECT_EQ(index->removedRows(), 7u * kRowsPerLandmark);
+	EXPECT_EQ(index->removedRows(), removedRows);
 }
 
 /** The default approximation: a noisy copy of a stored row finds that
