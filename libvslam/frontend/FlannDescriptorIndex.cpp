@@ -31,14 +31,15 @@ void FlannDescriptorIndex::build(Level& level) const
 	const cv::RNG callers = cv::theRNG();
 	cv::theRNG() = cv::RNG(kFlannSeed);
 	level.index = std::make_unique<cv::flann::Index>(
-		level.codes, cv::flann::KDTreeIndexParams(m_trees), cvflann::FLANN_DIST_L2);
+		DescriptorCodec::decode(level.codes), cv::flann::KDTreeIndexParams(m_trees), cvflann::FLANN_DIST_L2);
 	cv::theRNG() = callers;
 }
 
 void FlannDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
 {
 	Level added;
-	added.codes = m_codec.toMatchingSpace(siftDescriptors);
+	added.codes = m_codec.kind() == DescriptorCodec::Kind::Projected ? m_codec.encode(siftDescriptors)
+																	 : m_codec.toMatchingSpace(siftDescriptors);
 	added.firstRow = firstRow;
 	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	build(m_levels.back());
@@ -86,7 +87,8 @@ void FlannDescriptorIndex::doSearch(const cv::Mat& queries, std::vector<TwoNeare
 
 size_t FlannDescriptorIndex::doBytes() const
 {
-	// FLANN does not report its memory; its k-d tree (kdtree_index.h) has
+	// FLANN does not report its memory: its float copy of the rows
+	// (miniflann.hpp's features_clone) and its k-d tree (kdtree_index.h):
 	// one row index and, per tree, 2n - 1 nodes of two child pointers, a
 	// point pointer, a split dimension and value.
 	constexpr size_t kNodeBytes = 3 * sizeof(void*) + sizeof(int) + sizeof(float);
@@ -94,7 +96,9 @@ size_t FlannDescriptorIndex::doBytes() const
 	for (const Level& level : m_levels)
 	{
 		const auto n = static_cast<size_t>(level.codes.rows);
-		b += level.codes.total() * level.codes.elemSize() + n * sizeof(int) + static_cast<size_t>(m_trees) * (2 * n - 1) * kNodeBytes;
+		const size_t flannRows = level.codes.total() * sizeof(float);
+		b += level.codes.total() * level.codes.elemSize() + flannRows + n * sizeof(int) +
+			static_cast<size_t>(m_trees) * (2 * n - 1) * kNodeBytes;
 	}
 	return b;
 }

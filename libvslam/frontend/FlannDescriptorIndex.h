@@ -10,7 +10,11 @@
  *
  * FLANN draws its random split choices from cv::theRNG(): every build runs
  * on a fixed seed and restores the caller's generator, so results are the
- * same on every run and nothing else's random stream changes.
+ * same on every run and nothing else's random stream changes. *
+ * cv::flann::Index searches a copy of the rows it was built on (OpenCV
+ * 4.x keeps a clone, against dangling pointers), so the level keeps its
+ * own rows only to merge levels, as the codec's codes: signed bytes when
+ * it projects (a quarter of the floats), and bytes() counts both.
  */
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorIndex.h>
@@ -33,13 +37,16 @@ class FlannDescriptorIndex : public DescriptorIndex
    private:
 	struct Level
 	{
-		cv::Mat codes;  //!< CV_32F, one row per descriptor (the index reads it)
+		/** One row per descriptor, to merge levels: the codec's CV_8S
+		 * codes if it projects, else CV_32F values (FLANN searches its own
+		 * float copy). */
+		cv::Mat codes;
 		size_t firstRow = 0;  //!< levels hold consecutive rows
 		std::unique_ptr<cv::flann::Index> index;
 		int rows() const { return codes.rows; }
 		cv::Mat takeCodes()
 		{
-			index.reset();  // it reads the codes
+			index.reset();
 			return codes;
 		}
 	};
