@@ -17,9 +17,10 @@
  * are read from one block of memory. Rows may be given as floats or as
  * signed-byte codes standing for `unit` x code (the projected descriptor
  * codes of DescriptorCodec.h): a quarter of the memory, and for codes of
- * up to 64 dimensions with a power-of-two unit the same squared distances
- * to the last bit (every term and partial sum is then an integer multiple
- * of unit^2 below 2^24 unit^2, exact in float whatever the order).
+ * up to 64 dimensions with a power-of-two unit, and queries from the same
+ * codec, the squared distances of the tree over the decoded floats to the
+ * last bit (every term and partial sum is then an integer multiple of
+ * unit^2 below 2^24 unit^2, exact in float whatever the order).
  */
 #include <Eigen/Core>
 #include <opencv2/core.hpp>

@@ -10,7 +10,8 @@
  *
  * FLANN draws its random split choices from cv::theRNG(): every build runs
  * on a fixed seed and restores the caller's generator, so results are the
- * same on every run and nothing else's random stream changes. *
+ * same on every run and nothing else's random stream changes.
+ *
  * cv::flann::Index searches a copy of the rows it was built on (OpenCV
  * 4.x keeps a clone, against dangling pointers), so the level keeps its
  * own rows only to merge levels, as the codec's codes: signed bytes when
