@@ -19,10 +19,7 @@ BestBinFirstDescriptorIndex::~BestBinFirstDescriptorIndex() = default;
 void BestBinFirstDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
 {
 	Level added;
-	// Projected codes stay signed bytes (a quarter of the floats they
-	// decode to); the tree reads them as kProjectedStep x code.
-	added.codes = m_codec.kind() == DescriptorCodec::Kind::Projected ? m_codec.encode(siftDescriptors)
-																	 : m_codec.toMatchingSpace(siftDescriptors);
+	added.codes = m_codec.indexRows(siftDescriptors);  // the tree reads bytes as kProjectedStep x byte
 	added.firstRow = firstRow;
 	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	Level& last = m_levels.back();

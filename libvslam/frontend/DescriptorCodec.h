@@ -41,6 +41,13 @@ class DescriptorCodec
 	static cv::Mat decode(const cv::Mat& codes);
 	/** decode(encode(d)): image descriptors in the matching space. */
 	cv::Mat toMatchingSpace(const cv::Mat& descriptors) const { return decode(encode(descriptors)); }
+	/** What a descriptor index keeps of its rows: projected codes as the
+	 * signed bytes they are (value = kProjectedStep x byte, a quarter of
+	 * the floats), any other kind as toMatchingSpace() values (CV_32F). */
+	cv::Mat indexRows(const cv::Mat& descriptors) const
+	{
+		return m_kind == Kind::Projected ? encode(descriptors) : toMatchingSpace(descriptors);
+	}
 
 	Kind kind() const { return m_kind; }
 	int dims() const { return m_kind == Kind::Projected ? m_projection.rows : 128; }

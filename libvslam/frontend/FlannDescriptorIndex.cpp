@@ -38,8 +38,7 @@ void FlannDescriptorIndex::build(Level& level) const
 void FlannDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
 {
 	Level added;
-	added.codes = m_codec.kind() == DescriptorCodec::Kind::Projected ? m_codec.encode(siftDescriptors)
-																	 : m_codec.toMatchingSpace(siftDescriptors);
+	added.codes = m_codec.indexRows(siftDescriptors);
 	added.firstRow = firstRow;
 	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	build(m_levels.back());
