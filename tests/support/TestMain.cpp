@@ -2,9 +2,10 @@
  *
  * ctest runs the tests as processes side by side, one per core (-j), so the
  * cores are already busy. OpenCV's own thread pool on top of that only adds
- * waiting: one front-end test over 2 laps of images took 5.1 s on one core
- * with one thread, and 6.0 s of wall time and 9.0 s of CPU with the pool on
- * two free cores. The apps the tests start keep OpenCV's default. */
+ * waiting: on two free cores, one front-end test over 2 laps of images took
+ * 4.7 s of wall time and of CPU with one thread, and 6.0 s of wall time and
+ * 9.0 s of CPU with the pool (doc/reliability.md). The apps the tests start
+ * keep OpenCV's default. */
 #include <gtest/gtest.h>
 #include <opencv2/core/utility.hpp>
 
