@@ -32,13 +32,15 @@ case "$MODE" in demo | test | build) ;; *) usage ;; esac
 # apps rawlog-edit / kf-slam / rbpf-slam, and mrpt-common's demo datasets),
 # OpenCV 4.6, Eigen 3.4, nanoflann, GoogleTest, Google Benchmark, zlib;
 # Mesa's EGL and software rasterizer (vslam-simul renders headless through
-# MRPT's CFBORender); photographs for the simulated worlds' textures
-# (licences in doc/textures.md).
+# MRPT's CFBORender); photographs for the simulated worlds' textures and
+# Sweet Home 3D's materials and furniture models, read from the packages'
+# archives with libzip (licences in doc/textures.md).
 PACKAGES=(
   g++ make cmake pkg-config
   libmrpt-dev mrpt-apps mrpt-common
   libegl1 libegl-mesa0 libgl1-mesa-dri libgbm1
   mate-backgrounds plasma-workspace-wallpapers
+  sweethome3d sweethome3d-furniture libzip-dev
   libopencv-dev libeigen3-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev

@@ -1,7 +1,9 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/sim/CVisualSimulator.h>
+#include <libvslam/sim/CameraImaging.h>
 #include <libvslam/sim/CameraRenderer.h>
 #include <libvslam/sim/GoalDriver.h>
+#include <libvslam/sim/RobotRoute.h>
 #include <libvslam/sim/SimulationEvents.h>
 #include <libvslam/world/FreeSpace.h>
 #include <libvslam/world/LaserRayCaster.h>
@@ -24,15 +26,11 @@ using world::FreeSpace;
 
 namespace
 {
-Eigen::Vector2d waypoint(const TVisualSimOptions& o, size_t i)
-{
-	const size_t n = o.waypoints.size() / 2;
-	return {o.waypoints[2 * (i % n)], o.waypoints[2 * (i % n) + 1]};
-}
+constexpr double kDeg = M_PI / 180;
 
 Eigen::Vector2d startPoint(const TVisualSimOptions& o)
 {
-	return o.path_type == TVisualSimOptions::PathType::Waypoints ? waypoint(o, 0)
+	return o.path_type == TVisualSimOptions::PathType::Waypoints ? Eigen::Vector2d(o.waypoints[0], o.waypoints[1])
 																 : Eigen::Vector2d(o.start_pose[0], o.start_pose[1]);
 }
 
@@ -41,18 +39,6 @@ std::string describe(const Eigen::Vector2d& p)
 	char buf[64];
 	std::snprintf(buf, sizeof(buf), "(%.2f, %.2f)", p[0], p[1]);
 	return buf;
-}
-
-/** Random goals: a free cell in straight, collision-free sight. */
-Eigen::Vector2d randomGoal(const FreeSpace& fs, const se2::Pose& from, mrpt::random::CRandomGenerator& rng)
-{
-	const Eigen::Vector2d p(from.x, from.y);
-	for (int attempt = 0; attempt < 2000; attempt++)
-	{
-		const Eigen::Vector2d g = fs.freeCell(rng.drawUniform(0, 1));
-		if ((g - p).norm() > 0.5 && fs.segmentIsFree(p, g)) return g;
-	}
-	throw InputError("no collision-free goal in sight of " + describe(p) + ": the free space is too cramped");
 }
 
 mrpt::obs::CObservation2DRangeScan::Ptr laserScan(const TVisualSimOptions& o, const std::vector<world::Segment>& segs,
@@ -82,57 +68,75 @@ mrpt::obs::CObservation2DRangeScan::Ptr laserScan(const TVisualSimOptions& o, co
 	return scan;
 }
 
-/** Where a kidnapped robot is put: a random free pose at least
- * kidnap_min_distance away (waypoint loops: a random waypoint, heading for
- * the next one, whose index `nextWaypoint` becomes). */
-se2::Pose kidnapTarget(const TVisualSimOptions& o, const FreeSpace& fs, const se2::Pose& from,
-	mrpt::random::CRandomGenerator& rng, size_t& nextWaypoint)
+/** The robot's camera: renders the view (with the floor's jitter and the
+ * occasional bump), makes the frame as the sensor does, writes it. Its
+ * random draws have their own generator: they never change the path. */
+class CameraFrames
 {
-	const bool waypoints = o.path_type == TVisualSimOptions::PathType::Waypoints;
-	se2::Pose to;
-	for (int attempt = 0; attempt < 1000; attempt++)
+   public:
+	CameraFrames(const TVisualSimOptions& o, const std::string& imagesDir)
+		: m_o(o), m_dir(imagesDir), m_renderer(o.camera), m_imaging(o.imaging, o.camera.fx(), o.seed),
+		  m_mount(o.cameraPoseOnRobot()), m_rng(o.seed * 40503u + 7)
 	{
-		if (waypoints)
-		{
-			nextWaypoint = static_cast<size_t>(rng.drawUniform32bit() % (o.waypoints.size() / 2));
-			const Eigen::Vector2d at = waypoint(o, nextWaypoint), next = waypoint(o, ++nextWaypoint);
-			to = {at[0], at[1], std::atan2(next[1] - at[1], next[0] - at[0])};
-		}
-		else
-		{
-			const Eigen::Vector2d at = fs.freeCell(rng.drawUniform(0, 1));
-			to = {at[0], at[1], rng.drawUniform(-M_PI, M_PI)};
-		}
-		if (std::hypot(to.x - from.x, to.y - from.y) >= o.kidnap_min_distance) break;
 	}
-	return to;
-}
 
-/** The camera image at step k: rendered, with the image defects of that
- * moment, written to imagesDir, as the observation that names it. */
-mrpt::obs::CObservationImage::Ptr renderFrame(const TVisualSimOptions& o, const SimulationEvents& events,
-	const world::WorldScene& world, CameraRenderer& renderer, const mrpt::poses::CPose3D& mount,
-	const se2::Pose& robot, double turnRate, size_t k, mrpt::Clock::time_point t, const std::string& imagesDir)
+	mrpt::obs::CObservationImage::Ptr capture(const world::WorldScene& world, const SimulationEvents& events,
+		const se2::Pose& robot, double turnRate, size_t k, mrpt::Clock::time_point t)
+	{
+		const double tRel = k * m_o.dt, frameDt = m_o.stepsPerFrame() * m_o.dt;
+		FrameConditions f;
+		f.lighting = events.lightingGain(tRel);
+		f.blackout = events.blackout(tRel);
+		f.turnRate = turnRate;
+		f.dt = frameDt;
+		f.whiteBalanceEpoch = events.lightingEpoch(tRel);
+		f.noiseSeed = (static_cast<uint64_t>(m_o.seed) << 32) ^ k;
+		double pitch = m_o.camera_jitter_deg * m_rng.drawGaussian1D_normalized();
+		const double roll = m_o.camera_jitter_deg * m_rng.drawGaussian1D_normalized();
+		if (m_rng.drawUniform(0, 1) < 1 - std::exp(-m_o.camera_bump_rate * frameDt))
+		{
+			pitch += 1.0 * m_rng.drawGaussian1D_normalized();
+			f.bumpBlur = m_rng.drawUniform(3, 10) * m_o.camera.fy() / 250;
+		}
+		// Pitch and roll about the camera's own axes (x right, z ahead).
+		const mrpt::poses::CPose3D shake(0, 0, 0, 0, roll * kDeg, pitch * kDeg);
+		cv::Mat img = m_renderer.render(world.scene(), mrpt::poses::CPose3D(mrpt::poses::CPose2D(robot)) + m_mount + shake);
+		m_imaging.capture(img, f);
+		if (m_o.camera_grayscale) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
+		const bool jpg = m_o.image_format == "jpg";
+		const std::string name = "img_" + std::to_string(k) + (jpg ? ".jpg" : ".png");
+		const std::vector<int> params = jpg ? std::vector<int>{cv::IMWRITE_JPEG_QUALITY, m_o.jpeg_quality} : std::vector<int>{};
+		if (!cv::imwrite(m_dir + "/" + name, img, params)) throw InputError("cannot write image '" + m_dir + "/" + name + "'");
+		auto obs = mrpt::obs::CObservationImage::Create();
+		obs->timestamp = t;
+		obs->sensorLabel = "CAMERA";
+		obs->cameraParams = m_o.camera;
+		obs->cameraPose = m_mount;
+		obs->image.setExternalStorage(name);
+		return obs;
+	}
+
+   private:
+	const TVisualSimOptions& m_o;
+	std::string m_dir;
+	CameraRenderer m_renderer;
+	CameraImaging m_imaging;
+	mrpt::poses::CPose3D m_mount;
+	mrpt::random::CRandomGenerator m_rng;
+};
+
+/** People in the scene and as circles for the laser, at time t. */
+std::vector<world::Circle> placePeople(const SimulationEvents& events, world::WorldScene& world, double t)
 {
-	const double tRel = k * o.dt;
-	cv::Mat img = renderer.render(world.scene(), mrpt::poses::CPose3D(mrpt::poses::CPose2D(robot)) + mount);
-	CameraDefects d;
-	d.gain = events.lightingGain(tRel);
-	d.blackout = events.blackout(tRel);
-	d.blurPixels = std::abs(turnRate) * o.exposure_time * o.camera.fx();
-	d.noiseStd = o.image_noise_std;
-	d.noiseSeed = (static_cast<uint64_t>(o.seed) << 32) ^ k;
-	CameraRenderer::applyDefects(img, d);
-	if (o.camera_grayscale) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
-	const std::string name = "img_" + std::to_string(k) + (o.image_format == "jpg" ? ".jpg" : ".png");
-	if (!cv::imwrite(imagesDir + "/" + name, img)) throw InputError("cannot write image '" + imagesDir + "/" + name + "'");
-	auto obs = mrpt::obs::CObservationImage::Create();
-	obs->timestamp = t;
-	obs->sensorLabel = "CAMERA";
-	obs->cameraParams = o.camera;
-	obs->cameraPose = mount;
-	obs->image.setExternalStorage(name);
-	return obs;
+	std::vector<world::Circle> people;
+	for (size_t i = 0; i < events.peopleCount(); i++)
+	{
+		const auto p = events.person(i, t);
+		const PersonWalk& w = events.walk(i);
+		world.placePerson(i, p.has_value(), p.value_or(Eigen::Vector2d(0, 0)), std::atan2(w.to[1] - w.from[1], w.to[0] - w.from[0]));
+		if (p) people.push_back({*p, world::WorldScene::kPersonRadius});
+	}
+	return people;
 }
 }  // namespace
 
@@ -153,15 +157,17 @@ CVisualSimulator::CVisualSimulator(const TVisualSimOptions& options, const world
 	{
 		const size_t n = o.waypoints.size() / 2;
 		for (size_t i = 0; i < n; i++)
-			blocked(waypoint(o, i), waypoint(o, i + 1),
+		{
+			const size_t j = (i + 1) % n;
+			blocked({o.waypoints[2 * i], o.waypoints[2 * i + 1]}, {o.waypoints[2 * j], o.waypoints[2 * j + 1]},
 				"[vslam_simul] waypoints: the leg from point " + std::to_string(i + 1));
+		}
 	}
-	SimulationEvents events(o);
-	for (size_t i = 0; i < events.peopleCount(); i++)
+	for (size_t i = 0; i + 5 < o.people.size(); i += 6)
 	{
-		const double* p = &o.people[6 * i];
+		const double* p = &o.people[i];
 		if (const world::Segment* s = fs.blockingSegment({p[1], p[2]}, {p[3], p[4]}))
-			throw InputError("[vslam_simul] people: person " + std::to_string(i + 1) +
+			throw InputError("[vslam_simul] people: person " + std::to_string(i / 6 + 1) +
 				" walks through the obstacle on line " + std::to_string(s->line) + " of world file '" +
 				m_plan.sourceFile + "'");
 	}
@@ -172,90 +178,65 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 	const TVisualSimOptions& o = m_options;
 	std::filesystem::create_directories(imagesDir);
 	mrpt::random::CRandomGenerator rng(o.seed);  // robot, odometry, laser, kidnaps
-	const FreeSpace& fs = m_free;
-	const SimulationEvents events(o);
+	const SimulationEvents events(o, &m_free);
 	world::WorldScene world(m_plan, events.peopleCount(), o.texture_max_side);
-	CameraRenderer renderer(o.camera);
-	const mrpt::poses::CPose3D mount = o.cameraPoseOnRobot();
+	CameraFrames camera(o, imagesDir);
 	const std::vector<world::Segment> segments = m_plan.obstacleSegments();
+	RobotRoute route(o, m_free, rng);
 
 	DriveLimits limits;
 	limits.speed = o.speed, limits.maxTurnRate = o.max_turn_rate, limits.dt = o.dt;
 	limits.turnInPlaceAbove = 0.15;  // drive nearly straight legs: they were checked for collisions
 	limits.goalTolerance = 0.05;
-	size_t nextWaypoint = 1;
-	const bool waypoints = o.path_type == TVisualSimOptions::PathType::Waypoints;
-	GoalDriver driver(limits, [&](const se2::Pose& p) {
-		return waypoints ? waypoint(o, ++nextWaypoint) : randomGoal(fs, p, rng);
-	});
-	se2::Pose pose;
-	if (waypoints)
-	{
-		const Eigen::Vector2d a = waypoint(o, 0), b = waypoint(o, 1);
-		pose = {a[0], a[1], std::atan2(b[1] - a[1], b[0] - a[0])};
-		driver.setGoal(b);
-	}
-	else
-	{
-		pose = {o.start_pose[0], o.start_pose[1], o.start_pose[2] * M_PI / 180};
-		driver.setGoal(randomGoal(fs, pose, rng));
-	}
+	GoalDriver driver(limits, [&](const se2::Pose& p) { return route.nextGoal(p); });
+	se2::Pose pose = route.start();
+	driver.setGoal(route.firstGoal());
 
 	VisualSimRun out;
 	se2::Pose odometryPose = pose;
 	const size_t steps = static_cast<size_t>(std::floor(o.duration / o.dt + 1e-9));
-	const size_t framePeriod = o.stepsPerFrame();
 	std::vector<double> kidnaps = o.kidnap_times;
 	std::sort(kidnaps.begin(), kidnaps.end());
 	size_t nextKidnap = 0;
 	mrpt::system::CTicTac renderClock;
 
-	for (size_t k = 1; k <= steps; k++)  // every entry holds an odometry increment
+	for (size_t k = 1; k <= steps && (o.laps == 0 || route.laps() < o.laps); k++)  // every entry holds an odometry increment
 	{
 		const double tRel = k * o.dt;
 		const mrpt::Clock::time_point t = mrpt::Clock::fromDouble(kStartTime + tRel);
 		auto action = mrpt::obs::CActionCollection::Create();
-		double turnRate = 0;
+		const se2::Pose u = driver.step(pose);
+		const double turnRate = u.phi / o.dt;
+		const se2::Pose measured = o.odometry.measured(u, rng);
+		pose = se2::compose(pose, u);
+		if (se2::Pose slip; o.odometry.slip(rng, slip))
 		{
-			const se2::Pose u = driver.step(pose);
-			turnRate = u.phi / o.dt;
-			const se2::Pose measured = o.odometry.measured(u, rng);
-			pose = se2::compose(pose, u);
-			if (se2::Pose slip; o.odometry.slip(rng, slip))
-			{
-				const se2::Pose slipped = se2::compose(pose, slip);
-				if (fs.segmentIsFree({pose.x, pose.y}, {slipped.x, slipped.y})) pose = slipped, out.slips++;
-			}
-			odometryPose = se2::compose(odometryPose, measured);
-			mrpt::obs::CActionRobotMovement2D mv;
-			mv.computeFromOdometry(mrpt::poses::CPose2D(measured), {});
-			mv.timestamp = t;
-			action->insert(mv);
-			if (nextKidnap < kidnaps.size() && tRel >= kidnaps[nextKidnap])
-			{
-				nextKidnap++;
-				pose = kidnapTarget(o, fs, pose, rng, nextWaypoint);
-				driver.setGoal(waypoints ? waypoint(o, nextWaypoint) : randomGoal(fs, pose, rng));
-				out.kidnapSteps.push_back(k);
-			}
+			const se2::Pose slipped = se2::compose(pose, slip);
+			if (m_free.segmentIsFree({pose.x, pose.y}, {slipped.x, slipped.y})) pose = slipped, out.slips++;
 		}
+		odometryPose = se2::compose(odometryPose, measured);
+		mrpt::obs::CActionRobotMovement2D mv;
+		mv.computeFromOdometry(mrpt::poses::CPose2D(measured), {});
+		mv.timestamp = t;
+		action->insert(mv);
+		if (nextKidnap < kidnaps.size() && tRel >= kidnaps[nextKidnap])
+		{
+			nextKidnap++;
+			Eigen::Vector2d goal;
+			pose = route.kidnap(pose, goal);
+			driver.setGoal(goal);
+			out.kidnapSteps.push_back(k);
+		}
+		route.record(pose);
 		out.truePath.push_back({kStartTime + tRel, pose});
 		out.odometryPath.push_back({kStartTime + tRel, odometryPose});
 
-		std::vector<world::Circle> people;
-		for (size_t i = 0; i < events.peopleCount(); i++)
-		{
-			const auto p = events.person(i, tRel);
-			world.placePerson(i, p.has_value(), p.value_or(Eigen::Vector2d(0, 0)));
-			if (p) people.push_back({*p, world::WorldScene::kPersonRadius});
-		}
-
 		auto sf = mrpt::obs::CSensoryFrame::Create();
-		sf->insert(laserScan(o, segments, people, pose, rng, t));
-		if (k % framePeriod == 0)
+		sf->insert(laserScan(o, segments, placePeople(events, world, tRel), pose, rng, t));
+		if (k % o.stepsPerFrame() == 0)
 		{
 			renderClock.Tic();
-			sf->insert(renderFrame(o, events, world, renderer, mount, pose, turnRate, k, t, imagesDir));
+			sf->insert(camera.capture(world, events, pose, turnRate, k, t));
 			out.renderSeconds += renderClock.Tac();
 			out.images++;
 			out.blackFrames += events.blackout(tRel);
@@ -263,6 +244,7 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 		}
 		out.entries.emplace_back(action, sf);
 	}
+	out.laps = route.laps();
 	return out;
 }
 }  // namespace vslam

@@ -28,6 +28,7 @@ struct VisualSimRun
 	Trajectory odometryPath;  //!< dead reckoning from the true start
 	std::vector<size_t> kidnapSteps;
 	size_t images = 0, blackFrames = 0, slips = 0;
+	int laps = 0;  //!< loops completed (waypoints and tours)
 	double renderSeconds = 0;  //!< wall time spent rendering images
 };
 

@@ -96,23 +96,4 @@ cv::Mat CameraRenderer::render(const mrpt::opengl::COpenGLScene& scene, const mr
 	return out;
 }
 
-void CameraRenderer::applyDefects(cv::Mat& image, const CameraDefects& d)
-{
-	cv::Mat f;
-	image.convertTo(f, CV_32F, d.blackout ? 0.0 : d.gain);
-	const int len = static_cast<int>(std::round(d.blurPixels));
-	if (len >= 2 && !d.blackout)
-	{
-		const cv::Mat kernel = cv::Mat::ones(1, len, CV_32F) / static_cast<float>(len);
-		cv::filter2D(f, f, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
-	}
-	if (d.noiseStd > 0)
-	{
-		cv::RNG rng(d.noiseSeed);
-		cv::Mat noise(f.size(), f.type());
-		rng.fill(noise, cv::RNG::NORMAL, 0.0, d.noiseStd);
-		f += noise;
-	}
-	f.convertTo(image, CV_8U);  // saturates
-}
 }  // namespace vslam

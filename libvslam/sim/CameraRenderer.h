@@ -4,8 +4,8 @@
  * MRPT's offscreen renderer (mrpt::opengl::CFBORender through EGL):
  * an ideal pinhole image with the camera's focal lengths and principal
  * point, then the lens distortion of the calibration (the radial-tangential
- * model of mrpt::img::TCamera) applied by resampling, then the image
- * defects of a cheap camera (exposure gain, motion blur, sensor noise).
+ * model of mrpt::img::TCamera) applied by resampling. What the sensor makes
+ * of it is CameraImaging's.
  */
 #include <mrpt/img/TCamera.h>
 #include <mrpt/opengl/CFBORender.h>
@@ -17,15 +17,6 @@
 
 namespace vslam
 {
-struct CameraDefects
-{
-	double gain = 1.0;  //!< exposure / lighting: intensities times this
-	double blurPixels = 0;  //!< length of the horizontal motion blur
-	double noiseStd = 0;  //!< additive Gaussian sensor noise, grey levels
-	bool blackout = false;  //!< lens covered: only the sensor noise
-	uint64_t noiseSeed = 0;
-};
-
 class CameraRenderer
 {
    public:
@@ -34,9 +25,6 @@ class CameraRenderer
 	/** The 8-bit BGR image seen from `cameraPose` (MRPT camera axes:
 	 * z forward, x right, y down). */
 	cv::Mat render(const mrpt::opengl::COpenGLScene& scene, const mrpt::poses::CPose3D& cameraPose);
-
-	/** Applies exposure, blur and noise (deterministic for a seed). */
-	static void applyDefects(cv::Mat& image, const CameraDefects& defects);
 
 	const mrpt::img::TCamera& camera() const { return m_camera; }
 

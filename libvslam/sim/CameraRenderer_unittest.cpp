@@ -1,6 +1,5 @@
 /** The rendered camera's geometry: a marker at a known 3-D point appears
- * where the calibration (pinhole + distortion) projects it; and the image
- * defects do what they say. */
+ * where the calibration (pinhole + distortion) projects it. */
 #include <gtest/gtest.h>
 #include <libvslam/sim/CameraRenderer.h>
 #include <mrpt/img/CImage.h>
@@ -114,45 +113,4 @@ TEST(CameraRenderer, MarkersAppearWhereTheDistortedModelProjectsThem)
 	cam.dist.fill(0);
 	cam.dist[0] = -0.28, cam.dist[1] = 0.08, cam.dist[2] = 0.001, cam.dist[3] = -0.0005;
 	expectMarkersWhereProjected(cam);
-}
-
-TEST(CameraRenderer, DefectsScaleBlurAndNoiseTheImage)
-{
-	cv::Mat img(60, 80, CV_8UC3, cv::Scalar(100, 100, 100));
-	img.colRange(40, 80).setTo(cv::Scalar(200, 200, 200));
-	cv::Mat dark = img.clone();
-	CameraDefects d;
-	d.gain = 0.5;
-	CameraRenderer::applyDefects(dark, d);
-	EXPECT_EQ(dark.at<cv::Vec3b>(10, 10)[0], 50);
-	EXPECT_EQ(dark.at<cv::Vec3b>(10, 60)[0], 100);
-
-	cv::Mat blurred = img.clone();
-	d = {};
-	d.blurPixels = 10;
-	CameraRenderer::applyDefects(blurred, d);
-	EXPECT_NEAR(blurred.at<cv::Vec3b>(30, 40)[1], 150, 12);  // the edge is smeared over 10 px
-	EXPECT_EQ(blurred.at<cv::Vec3b>(30, 20)[1], 100);
-
-	cv::Mat noisy = img.clone(), noisy2 = img.clone();
-	d = {};
-	d.noiseStd = 5, d.noiseSeed = 7;
-	CameraRenderer::applyDefects(noisy, d);
-	CameraRenderer::applyDefects(noisy2, d);
-	EXPECT_EQ(cv::norm(noisy, noisy2, cv::NORM_INF), 0);  // same seed, same noise
-	cv::Mat diff;
-	img.convertTo(diff, CV_32F);
-	cv::Mat nf;
-	noisy.convertTo(nf, CV_32F);
-	cv::Scalar mean, stddev;
-	const cv::Mat delta = nf - diff;
-	cv::meanStdDev(delta.reshape(1), mean, stddev);
-	EXPECT_NEAR(stddev[0], 5, 0.5);
-	EXPECT_NEAR(mean[0], 0, 0.3);
-
-	cv::Mat black = img.clone();
-	d = {};
-	d.blackout = true;
-	CameraRenderer::applyDefects(black, d);
-	EXPECT_EQ(cv::countNonZero(black.reshape(1)), 0);
 }

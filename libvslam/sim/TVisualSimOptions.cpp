@@ -79,12 +79,13 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	max_turn_rate = readDouble(c, s, "max_turn_rate", max_turn_rate, {0, 10, false, true});
 	robot_radius = readDouble(c, s, "robot_radius", robot_radius, {0, 2, false, true});
 	path_type = static_cast<PathType>(
-		readChoice(c, s, "path_type", static_cast<size_t>(path_type), {"waypoints", "random"}));
+		readChoice(c, s, "path_type", static_cast<size_t>(path_type), {"waypoints", "random", "tour", "roam"}));
 	waypoints = readList(c, s, "waypoints", waypoints, 2, "'x y'");
 	if (path_type == PathType::Waypoints && waypoints.size() < 4)
 		throw ConfigError("[" + s + "] waypoints: path_type=waypoints needs at least two points");
 	start_pose = readList(c, s, "start_pose", start_pose, 3, "'x y phi_deg'");
 	if (start_pose.size() != 3) throw ConfigError("[" + s + "] start_pose: expected 'x y phi_deg'");
+	laps = static_cast<int>(readInt(c, s, "laps", laps, Range::closed(0, 1000)));
 
 	odometry.sigma_T = readDouble(c, s, "odo_sigma_T", odometry.sigma_T, Range::closed(0, 10));
 	odometry.sigma_R = readDouble(c, s, "odo_sigma_R", odometry.sigma_R, Range::closed(0, 10));
@@ -115,9 +116,19 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	camera_mount = readNumberList(c, s, "camera_mount", camera_mount);
 	if (camera_mount.size() != 6) throw ConfigError("[" + s + "] camera_mount: expected 'x y z yaw pitch roll'");
 	camera_grayscale = readBool(c, s, "camera_grayscale", camera_grayscale);
-	image_noise_std = readDouble(c, s, "image_noise_std", image_noise_std, Range::closed(0, 128));
-	exposure_time = readDouble(c, s, "exposure_time", exposure_time, Range::closed(0, 1));
+	imaging.auto_exposure = readBool(c, s, "camera_auto_exposure", imaging.auto_exposure);
+	imaging.max_exposure_time = readDouble(c, s, "exposure_time", imaging.max_exposure_time, {0, 1, false, true});
+	imaging.max_gain = readDouble(c, s, "camera_max_gain", imaging.max_gain, Range::closed(1, 64));
+	imaging.ae_time_constant = readDouble(c, s, "camera_ae_time_constant", imaging.ae_time_constant, Range::closed(0, 60));
+	imaging.vignetting = readDouble(c, s, "camera_vignetting", imaging.vignetting, Range::closed(0, 0.9));
+	imaging.white_balance_error =
+		readDouble(c, s, "camera_white_balance_error", imaging.white_balance_error, Range::closed(0, 0.5));
+	imaging.full_well = readDouble(c, s, "camera_full_well", imaging.full_well, {1, 1e7, true, true});
+	imaging.read_noise = readDouble(c, s, "camera_read_noise", imaging.read_noise, Range::closed(0, 1e4));
+	camera_bump_rate = readDouble(c, s, "camera_bump_rate", camera_bump_rate, Range::closed(0, 10));
+	camera_jitter_deg = readDouble(c, s, "camera_jitter_deg", camera_jitter_deg, Range::closed(0, 10));
 	image_format = readWord(c, s, "image_format", image_format, {"png", "jpg"});
+	jpeg_quality = static_cast<int>(readInt(c, s, "jpeg_quality", jpeg_quality, Range::closed(1, 100)));
 
 	laser_rays = static_cast<int>(readInt(c, s, "laser_rays", laser_rays, Range::closed(2, 10000)));
 	laser_fov = readDegreesAsRadians(c, s, "laser_fov_deg", laser_fov, {0, 360, false, true});
@@ -129,6 +140,8 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	kidnap_times = readNumberList(c, s, "kidnap_times", kidnap_times);
 	checkTimes(s, "kidnap_times", kidnap_times, 1, duration);
 	kidnap_min_distance = readDouble(c, s, "kidnap_min_distance", kidnap_min_distance, Range::closed(0, 1000));
+	kidnap_target = static_cast<KidnapTarget>(
+		readChoice(c, s, "kidnap_target", static_cast<size_t>(kidnap_target), {"visited", "anywhere"}));
 	light_changes = readList(c, s, "light_changes", light_changes, 2, "'t gain'");
 	checkTimes(s, "light_changes", light_changes, 2, duration);
 	for (size_t i = 1; i < light_changes.size(); i += 2)
@@ -143,6 +156,7 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	checkTimes(s, "people", people, 6, duration);
 	for (size_t i = 5; i < people.size(); i += 6)
 		if (people[i] <= 0 || people[i] > 5) throw ConfigError("[" + s + "] people: walking speed outside (0, 5] m/s");
+	random_people = static_cast<int>(readInt(c, s, "random_people", random_people, Range::closed(0, 1000)));
 }
 
 void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -159,10 +173,12 @@ void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 	w("speed", speed, "Forward speed [m/s]");
 	w("max_turn_rate", max_turn_rate, "Turn rate limit [rad/s]");
 	w("robot_radius", robot_radius, "Robot radius, kept clear of obstacles [m]");
-	w("path_type", std::string(path_type == PathType::Waypoints ? "waypoints" : "random"),
-		"waypoints (looped) | random (collision-free random goals)");
+	static const char* kPaths[] = {"waypoints", "random", "tour", "roam"};
+	w("path_type", std::string(kPaths[static_cast<size_t>(path_type)]),
+		"waypoints (looped) | random (goals in sight) | tour (every room, looped) | roam (goals anywhere, planned)");
 	w("waypoints", joinNumbers(waypoints), "x1 y1 x2 y2 ... [m], driven in a loop");
-	w("start_pose", joinNumbers(start_pose), "x y phi_deg: start of a random path");
+	w("start_pose", joinNumbers(start_pose), "x y phi_deg: start of a random, tour or roam path");
+	w("laps", laps, "Waypoint and tour loops: stop after this many (0: at duration)");
 	w("odo_sigma_T", odometry.sigma_T, "Odometry translational noise [m/sqrt(m)] (paper's sigma_T)");
 	w("odo_sigma_R", odometry.sigma_R, "Odometry rotational noise [rad/sqrt(rad)] (paper's sigma_R)");
 	w("odo_sigma_R_per_meter", odometry.sigma_R_per_meter, "Odometry heading drift [rad/sqrt(m)]");
@@ -182,9 +198,18 @@ void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 		"Distortion k1 k2 p1 p2 k3 (MRPT / OpenCV model)");
 	w("camera_mount", joinNumbers(camera_mount), "Camera on the robot: x y z [m] yaw pitch roll [deg], 0 0 0 looks ahead");
 	w("camera_grayscale", camera_grayscale, "Grey images instead of colour");
-	w("image_noise_std", image_noise_std, "Sensor noise [grey levels]");
-	w("exposure_time", exposure_time, "Exposure time for motion blur [s]");
-	w("image_format", image_format, "png | jpg (files in <rawlog>_Images/)");
+	w("camera_auto_exposure", imaging.auto_exposure, "Exposure time and gain follow the scene's brightness");
+	w("exposure_time", imaging.max_exposure_time, "Longest exposure [s] (motion blur; the shortest is 1/20 of it)");
+	w("camera_max_gain", imaging.max_gain, "Analogue gain limit of the auto-exposure");
+	w("camera_ae_time_constant", imaging.ae_time_constant, "Auto-exposure lag [s]");
+	w("camera_vignetting", imaging.vignetting, "Light lost in the image corners (0-1)");
+	w("camera_white_balance_error", imaging.white_balance_error, "Std of the white balance error per channel");
+	w("camera_full_well", imaging.full_well, "Electrons at saturation at gain 1 (shot noise)");
+	w("camera_read_noise", imaging.read_noise, "Read noise [electrons]");
+	w("camera_bump_rate", camera_bump_rate, "Bumps per second (a jolt of pitch and vertical blur)");
+	w("camera_jitter_deg", camera_jitter_deg, "Std of the camera's pitch and roll from the floor [deg]");
+	w("image_format", image_format, "jpg | png (files in <rawlog>_Images/)");
+	w("jpeg_quality", jpeg_quality, "JPEG quality (1-100)");
 	w("laser_rays", laser_rays, "Laser rays per scan");
 	w("laser_fov_deg", laser_fov * 180 / M_PI, "Laser field of view [deg]");
 	w("laser_max_range", laser_max_range, "Laser maximum range [m]");
@@ -192,11 +217,14 @@ void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 	w("laser_pose", joinNumbers(laser_pose), "Laser on the robot: x y z [m]");
 	w("kidnap_times", joinNumbers(kidnap_times), "Times [s] at which the robot is carried elsewhere");
 	w("kidnap_min_distance", kidnap_min_distance, "Kidnap displacement at least [m]");
+	w("kidnap_target", std::string(kidnap_target == KidnapTarget::Visited ? "visited" : "anywhere"),
+		"visited (a pose the robot had before) | anywhere (a random free pose)");
 	w("light_changes", joinNumbers(light_changes), "t gain ...: lighting times gain from t on");
 	w("dark_spells", joinNumbers(dark_spells), "t0 t1 ...: dark spells (lighting at dark_gain)");
 	w("dark_gain", dark_gain, "Lighting during a dark spell");
 	w("blackouts", joinNumbers(blackouts), "t0 t1 ...: camera blackouts (black frames)");
 	w("people", joinNumbers(people), "t x0 y0 x1 y1 speed ...: people walking through");
+	w("random_people", random_people, "People walking between random free places at random times");
 }
 
 TVisualSimOptions loadVisualSimOptions(

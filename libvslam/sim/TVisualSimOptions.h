@@ -8,6 +8,7 @@
  * in config_ini/simul_example.ini.
  */
 #include <libvslam/config/Overrides.h>
+#include <libvslam/sim/CameraImaging.h>
 #include <libvslam/sim/OdometryErrorModel.h>
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/img/TCamera.h>
@@ -23,7 +24,11 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 {
 	static constexpr const char* kSection = "vslam_simul";
 
-	enum class PathType : uint8_t { Waypoints = 0, Random = 1 };
+	/** waypoints: the listed loop; random: random goals in straight sight;
+	 * tour: a systematic loop through every room (PathPlanner.h); roam:
+	 * random goals anywhere in the home, reached by planned paths. */
+	enum class PathType : uint8_t { Waypoints = 0, Random = 1, Tour = 2, Roam = 3 };
+	enum class KidnapTarget : uint8_t { Visited = 0, Anywhere = 1 };
 
 	uint32_t seed = 1;
 	/** World file (FloorPlanFile.h); relative paths are relative to the INI. */
@@ -42,8 +47,10 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	/** "x1 y1 x2 y2 ...": the path, driven in a loop (waypoints). The robot
 	 * starts at the first point facing the second. */
 	std::vector<double> waypoints;
-	/** "x y phi_deg": start of a random path. */
+	/** "x y phi_deg": start of a random, tour or roam path. */
 	std::vector<double> start_pose{2, 1, 0};
+	/** Waypoint and tour loops: stop after this many (0: at `duration`). */
+	int laps = 0;
 
 	TOdometryErrorModel odometry;
 
@@ -54,10 +61,17 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	 * looks straight ahead along the robot's x axis. */
 	std::vector<double> camera_mount{0.1, 0, 0.3, 0, 0, 0};
 	bool camera_grayscale = false;
-	double image_noise_std = 2.0;  //!< grey levels
-	/** Motion blur: the image moves this long while exposed (s). */
-	double exposure_time = 0.02;
-	std::string image_format = "png";  //!< png | jpg
+	/** Exposure, vignetting, white balance, sensor noise; its
+	 * max_exposure_time is the key exposure_time. */
+	TCameraImagingOptions imaging;
+	/** Bumps per second (floor joints, thresholds, rugs): a frame with a
+	 * jolt of pitch and vertical blur. */
+	double camera_bump_rate = 0.05;
+	/** Standard deviation of the camera's pitch and roll from the floor's
+	 * unevenness, per frame (deg). */
+	double camera_jitter_deg = 0.15;
+	std::string image_format = "jpg";  //!< png | jpg
+	int jpeg_quality = 85;
 
 	// Laser (for rbpf-slam)
 	int laser_rays = 181;
@@ -69,6 +83,9 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	// Events
 	std::vector<double> kidnap_times;  //!< s
 	double kidnap_min_distance = 2.0;  //!< m
+	/** visited: to a pose the robot had before (a place its map knows);
+	 * anywhere: a random free pose. */
+	KidnapTarget kidnap_target = KidnapTarget::Visited;
 	/** "t1 gain1 t2 gain2 ...": from t on, the lighting is gain times the
 	 * normal (1). */
 	std::vector<double> light_changes;
@@ -80,6 +97,8 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	/** "t x0 y0 x1 y1 speed ...": a person appears at (x0, y0) at time t
 	 * and walks to (x1, y1) at speed m/s, then leaves. */
 	std::vector<double> people;
+	/** People walking between random free places at random times. */
+	int random_people = 0;
 
 	TVisualSimOptions();
 

@@ -47,7 +47,7 @@ TEST(VslamSimul, WritesARawlogThatVslamAndRbpfSlamBothRun)
 		"' --quiet --set vslam_simul.duration=40");
 	ASSERT_EQ(sim.exitCode, 0) << sim.output;
 	EXPECT_TRUE(contains(sim.output, "200 steps (40 s simulated), 100 images")) << sim.output;
-	for (const char* f : {"sim_groundtruth.tum", "sim_odometry.tum", "sim_preview.png", "sim_Images/img_2.png"})
+	for (const char* f : {"sim_groundtruth.tum", "sim_odometry.tum", "sim_preview.png", "sim_Images/img_2.jpg"})
 		EXPECT_TRUE(fs::exists(dir.path() / f)) << f;
 	EXPECT_EQ(dataRows((dir.path() / "sim_groundtruth.tum").string()), 200u);
 

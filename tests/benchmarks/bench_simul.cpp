@@ -4,6 +4,7 @@
  *   build/bin/bench_simul
  */
 #include <benchmark/benchmark.h>
+#include <libvslam/sim/CameraImaging.h>
 #include <libvslam/sim/CameraRenderer.h>
 #include <libvslam/sim/TVisualSimOptions.h>
 #include <libvslam/world/FloorPlanFile.h>
@@ -35,9 +36,9 @@ void BM_RenderFrame(benchmark::State& state)
 	if (distorted) cam.dist[0] = -0.2, cam.dist[1] = 0.05;
 	CameraRenderer renderer(cam);
 	const mrpt::poses::CPose3D mount = TVisualSimOptions().cameraPoseOnRobot();
-	CameraDefects defects;
-	defects.noiseStd = 2;
-	defects.blurPixels = 3;
+	CameraImaging imaging(TCameraImagingOptions(), cam.fx(), 1);
+	FrameConditions frame;
+	frame.turnRate = 0.3;
 	int k = 0;
 	for (auto _ : state)
 	{
@@ -45,8 +46,8 @@ void BM_RenderFrame(benchmark::State& state)
 		const double a = 0.05 * k++;
 		const mrpt::poses::CPose3D robot(2.0 + 1.5 * std::cos(a), 2.0 + 0.8 * std::sin(a), 0, a + M_PI / 2, 0, 0);
 		cv::Mat img = renderer.render(scene.scene(), robot + mount);
-		defects.noiseSeed = static_cast<uint64_t>(k);
-		CameraRenderer::applyDefects(img, defects);
+		frame.noiseSeed = static_cast<uint64_t>(k);
+		imaging.capture(img, frame);
 		benchmark::DoNotOptimize(img.data);
 	}
 	state.counters["frames_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
