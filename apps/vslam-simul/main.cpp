@@ -15,10 +15,12 @@
 #include <libvslam/config/Overrides.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/sim/CVisualSimulator.h>
+#include <libvslam/sim/SimulatedWorld.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/system/CTicTac.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 namespace
@@ -58,7 +60,8 @@ int main(int argc, const char** argv)
 		{
 			throw ConfigError("'" + ini + "': " + e.what());
 		}
-		const world::FloorPlan plan = world::loadFloorPlan(options.world_file, options.texture_dir);
+		const SimulatedWorld world = loadSimulatedWorld(options);
+		const world::FloorPlan& plan = world.plan;
 		const CVisualSimulator simulator(options, plan);
 
 		const std::string& rawlog = positional[1];
@@ -74,6 +77,15 @@ int main(int argc, const char** argv)
 		writeTumTrajectory(siblingFile(rawlog, "_groundtruth.tum"), run.truePath);
 		writeTumTrajectory(siblingFile(rawlog, "_odometry.tum"), run.odometryPath);
 		writeSimulationPreview(plan, run, siblingFile(rawlog, "_preview.png"));
+		if (!world.generatedText.empty())
+		{
+			// The generated home as a world file: to read, edit, or give vslam-eval --world.
+			const std::string file = siblingFile(rawlog, "_world.world");
+			std::ofstream out(file);
+			out << world.generatedText;
+			out.close();
+			if (!out) throw std::runtime_error("cannot write '" + file + "'");
+		}
 		const double wall = clock.Tac();
 		std::cout << "vslam-simul: " << run.entries.size() << " steps (" << options.duration << " s simulated), "
 				  << run.images << " images (" << run.blackFrames << " black), " << run.kidnapSteps.size()

@@ -68,7 +68,9 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 {
 	seed = static_cast<uint32_t>(readInt(c, s, "seed", seed, Range::closed(0, 4294967295.0)));
 	world_file = readString(c, s, "world_file", world_file);
-	if (world_file.empty()) throw ConfigError("[" + s + "] world_file: a world file is required");
+	world_seed = static_cast<uint32_t>(readInt(c, s, "world_seed", world_seed, Range::closed(0, 4294967295.0)));
+	if (world_file.empty() == (world_seed == 0))
+		throw ConfigError("[" + s + "] world_file, world_seed: give either a world file or a generated home's seed (world_seed = 0 uses the world file)");
 	texture_dir = readString(c, s, "texture_dir", texture_dir);
 	texture_max_side = static_cast<int>(readInt(c, s, "texture_max_side", texture_max_side, Range::closed(16, 16384)));
 	duration = readDouble(c, s, "duration", duration, Range::closed(0, 1e6));
@@ -166,6 +168,7 @@ void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 	};
 	w("seed", static_cast<int>(seed), "Random seed (same seed, same rawlog and images)");
 	w("world_file", world_file, "World file (walls, furniture, pictures, doors); relative to this INI");
+	w("world_seed", static_cast<long>(world_seed), "A generated home instead of world_file (0: none)");
 	w("texture_dir", texture_dir, "Folder of the photographs the world file names");
 	w("texture_max_side", texture_max_side, "Longest side of one surface's texture [px]");
 	w("duration", duration, "Simulated time [s]");
@@ -236,7 +239,7 @@ TVisualSimOptions loadVisualSimOptions(
 	known.addFromOptions(options, TVisualSimOptions::kSection);
 	config::checkNoUnknownKeys(cfg, known, TVisualSimOptions::kSection);
 	options.loadFromConfigFile(cfg, TVisualSimOptions::kSection);
-	if (std::filesystem::path(options.world_file).is_relative() && !iniDirectory.empty())
+	if (!options.world_file.empty() && std::filesystem::path(options.world_file).is_relative() && !iniDirectory.empty())
 		options.world_file = (std::filesystem::path(iniDirectory) / options.world_file).string();
 	return options;
 }

@@ -33,6 +33,9 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 	uint32_t seed = 1;
 	/** World file (FloorPlanFile.h); relative paths are relative to the INI. */
 	std::string world_file;
+	/** A generated home (HomeGenerator.h) instead of world_file, when not 0;
+	 * the robot starts at the home's start. */
+	uint32_t world_seed = 0;
 	/** Folder of the photographs named in the world file. */
 	std::string texture_dir = "/usr/share";
 	int texture_max_side = 2048;  //!< px, longest side of one surface's texture

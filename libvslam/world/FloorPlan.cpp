@@ -111,7 +111,8 @@ double FloorPlan::decoratedWallShare() const
 {
 	double wallArea = 0, decorated = 0;
 	for (const Wall& w : walls) wallArea += (w.hasBack ? 2 : 1) * (w.b - w.a).norm() * ceilingHeight;
-	for (const Picture& p : pictures) decorated += (p.b - p.a).norm() * (p.z1 - p.z0);
+	for (const Picture& p : pictures)
+		if (p.framed) decorated += (p.b - p.a).norm() * (p.z1 - p.z0);
 	return wallArea > 0 ? decorated / wallArea : 0;
 }
 

@@ -105,13 +105,16 @@ struct Furniture
 };
 
 /** A picture hanging on the front face of a wall-like line a -> b, from
- * height z0 to z1, a few mm in front of it. Not an obstacle. */
+ * height z0 to z1, a few mm in front of it, in a frame; or, unframed, a
+ * panel covering the wall there (tiles behind a kitchen counter). Not an
+ * obstacle. */
 struct Picture
 {
 	Eigen::Vector2d a, b;
 	double z0 = 1, z1 = 1.5;
 	TextureRef texture;
 	int line = 0;
+	bool framed = true;
 };
 
 /** A door leaf (open, standing in the room): a thin panel from a to b,
@@ -168,8 +171,8 @@ struct FloorPlan
 	std::vector<std::pair<double, double>> wallPieces(size_t i) const;
 	/** The openings of wall i, ordered along it. */
 	std::vector<const Opening*> openingsOf(size_t i) const;
-	/** Share of the walls' textured face area covered by pictures: a
-	 * world's decorated share. */
+	/** Share of the walls' textured face area covered by (framed)
+	 * pictures: a world's decorated share. */
 	double decoratedWallShare() const;
 };
 

@@ -290,6 +290,7 @@ void parsePicture(const LineParser& p, FloorPlan& plan)
 {
 	p.expectFields(7, 7, "X1 Y1 X2 Y2 Z0 Z1 TEXTURE");
 	Picture q;
+	q.framed = p.item() == "picture";
 	q.a = p.point(1), q.b = p.point(3);
 	p.distinct(q.a, q.b);
 	q.z0 = p.number(5, "z0"), q.z1 = p.number(6, "z1");
@@ -337,12 +338,12 @@ void parseItem(const LineParser& p, FloorPlan& plan)
 	else if (item == "doorway" || item == "window") parseOpening(p, plan);
 	else if (item == "furniture") parseFurniture(p, plan);
 	else if (item == "box") parseBox(p, plan);
-	else if (item == "picture") parsePicture(p, plan);
+	else if (item == "picture" || item == "panel") parsePicture(p, plan);
 	else if (item == "door") parseDoor(p, plan);
 	else
 		p.fail("unknown item '" + item +
 			   "' (expected ceiling_height, material, floor, ceiling, skirting, wall, doorway, window, furniture, "
-			   "box, picture or door)");
+			   "box, picture, panel or door)");
 }
 }  // namespace
 

@@ -14,6 +14,7 @@
  *     furniture X Y FACING NAME [ELEVATION]
  *     box       X Y YAW SIZE_X SIZE_Y HEIGHT TEXTURE
  *     picture   X1 Y1 X2 Y2 Z0 Z1 TEXTURE
+ *     panel     X1 Y1 X2 Y2 Z0 Z1 TEXTURE
  *     door      X1 Y1 X2 Y2 TEXTURE
  *
  * TEXTURE is a photograph, relative to the texture folder (or absolute;
@@ -32,6 +33,8 @@
  * the wall's back face. FURNITURE is a catalogue model (FurnitureCatalog.h,
  * `vslam-simul --list-furniture`) with the centre of its footprint at X Y
  * and its front facing FACING degrees; ELEVATION overrides the catalogue's.
+ * A picture hangs in a frame on the wall face left of X1 Y1 -> X2 Y2; a
+ * panel covers the wall there without one (tiles behind a counter).
  *
  * Any error (unknown item or material, wrong field count, bad number,
  * missing texture, degenerate geometry, a doorway or window that is not on

@@ -35,13 +35,42 @@ std::string spec(const FloorPlan& plan, const TextureRef& t, const std::string& 
 	return t.mirrored ? s + "~" : s;
 }
 
-double deg(double rad) { return rad * 180 / M_PI; }
+/** Degrees in (-180, 180]. */
+double deg(double rad)
+{
+	double d = std::fmod(rad * 180 / M_PI, 360.0);
+	if (d <= -180) d += 360;
+	if (d > 180) d -= 360;
+	return d;
+}
+
+/** The materials some surface uses (a plan may define more). */
+std::vector<bool> usedMaterials(const FloorPlan& plan)
+{
+	std::vector<bool> used(plan.materials.size(), false);
+	const auto use = [&](const TextureRef& t) {
+		if (t.material >= 0) used[static_cast<size_t>(t.material)] = true;
+	};
+	if (plan.hasFloorTexture) use(plan.floor);
+	if (plan.hasCeilingTexture) use(plan.ceiling);
+	if (plan.skirtingHeight > 0) use(plan.skirting);
+	for (const Wall& w : plan.walls) use(w.front), use(w.back);
+	for (const Opening& o : plan.openings) use(o.texture);
+	for (const FloorArea& a : plan.floorAreas) use(a.texture);
+	for (const Box& b : plan.boxes) use(b.texture);
+	for (const Picture& q : plan.pictures) use(q.texture);
+	for (const Door& d : plan.doors) use(d.texture);
+	return used;
+}
 
 void writeSurfaces(const FloorPlan& plan, const std::string& dir, std::ostream& out)
 {
 	out << "ceiling_height " << num(plan.ceilingHeight) << "\n";
-	for (const Material& m : plan.materials)
+	const std::vector<bool> used = usedMaterials(plan);
+	for (size_t i = 0; i < plan.materials.size(); i++)
 	{
+		if (!used[i]) continue;
+		const Material& m = plan.materials[i];
 		out << "material " << m.name << " " << relative(m.file, dir) << " " << num(m.tileWidth) << " "
 			<< num(m.tileHeight);
 		if (m.tint != std::array<double, 3>{1, 1, 1})
@@ -97,7 +126,7 @@ std::string floorPlanText(const FloorPlan& plan, const std::string& textureDir)
 		out << "box " << pt(b.centre) << " " << num(deg(b.yaw)) << " " << num(b.sizeX) << " " << num(b.sizeY) << " "
 			<< num(b.height) << " " << spec(plan, b.texture, textureDir) << "\n";
 	for (const Picture& q : plan.pictures)
-		out << "picture " << pt(q.a) << " " << pt(q.b) << " " << num(q.z0) << " " << num(q.z1) << " "
+		out << (q.framed ? "picture " : "panel ") << pt(q.a) << " " << pt(q.b) << " " << num(q.z0) << " " << num(q.z1) << " "
 			<< spec(plan, q.texture, textureDir) << "\n";
 	for (const Door& d : plan.doors) out << "door " << pt(d.a) << " " << pt(d.b) << " " << spec(plan, d.texture, textureDir) << "\n";
 	return out.str();

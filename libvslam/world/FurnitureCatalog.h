@@ -43,8 +43,12 @@ enum class FurnitureRole
 	Appliance,
 	Radiator,
 	ClosedDoor,
-	Rug,
-	Person
+	Person,
+	Decor,  //!< stands on furniture: vases, lamps, radios, frames
+	KitchenDecor,  //!< stands on kitchen counters
+	Switch,  //!< on the wall beside a doorway
+	WallDecor,  //!< hangs on a wall: a clock
+	Clutter  //!< stands on the floor: boxes, baskets, a guitar
 };
 
 struct FurnitureItem
@@ -62,7 +66,7 @@ struct FurnitureItem
 
 	/** Is in the robot's way: reaches below 0.5 m (a wall cabinet or a
 	 * ceiling lamp does not). */
-	bool isObstacle() const { return elevation < 0.5 && role != FurnitureRole::Rug; }
+	bool isObstacle() const { return elevation < 0.5; }
 };
 
 /** Every item, in a fixed order. */

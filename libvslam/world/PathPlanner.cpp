@@ -90,6 +90,7 @@ std::vector<Eigen::Vector2d> PathPlanner::plan(const Eigen::Vector2d& a, const E
 	for (int i = rb * cols + cb; i >= 0 && i != ra * cols + ca; i = parent[static_cast<size_t>(i)])
 		cells.push_back(centreOf(i / cols, i % cols));
 	std::reverse(cells.begin(), cells.end());
+	if (cells.empty()) return {b};  // in a's cell
 	cells.back() = b;
 	// The fewest straight legs: from each corner, the farthest cell in free sight.
 	std::vector<Eigen::Vector2d> legs;

@@ -199,6 +199,7 @@ void WorldScene::addPictures()
 		const double len = (q.b - q.a).norm();
 		const Eigen::Vector2d d = (q.b - q.a) / len, n = leftOf(d);
 		insert(verticalFace(q.a + 0.02 * n, q.b + 0.02 * n, q.z0, q.z1, {}, m_textures.surface(q.texture, len, q.z1 - q.z0)));
+		if (!q.framed) continue;
 		const double f = 0.025;  // the frame around it
 		insert(plainBox(q.a - f * d, d, f, n, 0.025, q.z0 - f, q.z1 + f, kFrame));
 		insert(plainBox(q.b, d, f, n, 0.025, q.z0 - f, q.z1 + f, kFrame));
