@@ -87,7 +87,7 @@ int main(int argc, const char** argv)
 			if (!out) throw std::runtime_error("cannot write '" + file + "'");
 		}
 		const double wall = clock.Tac();
-		std::cout << "vslam-simul: " << run.entries.size() << " steps (" << options.duration << " s simulated), "
+		std::cout << "vslam-simul: " << run.entries.size() << " steps (" << run.entries.size() * options.dt << " s simulated), "
 				  << run.images << " images (" << run.blackFrames << " black), " << run.kidnapSteps.size()
 				  << " kidnaps, " << run.slips << " slips; " << wall << " s wall, "
 				  << (run.images > 0 ? run.images / std::max(run.renderSeconds, 1e-9) : 0.0)

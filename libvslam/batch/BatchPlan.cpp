@@ -79,7 +79,8 @@ std::vector<int> parseSeeds(const std::string& text, const std::string& where)
 /** The keys whose value is a path (relative to the batch file's folder). */
 bool isPathKey(const std::string& key)
 {
-	static const std::set<std::string> paths{"output_dir", "vslam_ini", "simul_ini", "rawlog", "ground_truth", "world"};
+	static const std::set<std::string> paths{
+		"output_dir", "vslam_ini", "simul_ini", "rawlog", "ground_truth", "world", "rbpf_slam_ini"};
 	return paths.count(key) > 0;
 }
 
@@ -253,6 +254,18 @@ std::string BatchPlan::groundTruthOf(const Scenario& s, int seed) const
 	return (fs::path(outputDir) / s.name / ("data_seed" + std::to_string(seed)) / "sim_groundtruth.tum").string();
 }
 
+std::string BatchPlan::worldOf(const Scenario& s, int seed) const
+{
+	if (s.simulIni.empty()) return s.world;
+	const fs::path generated = fs::path(rawlogOf(s, seed)).parent_path() / "sim_world.world";
+	return fs::exists(generated) ? generated.string() : s.world;
+}
+
+std::string BatchPlan::peerDirOf(const Scenario& s, int seed) const
+{
+	return (fs::path(outputDir) / s.name / "rbpf-slam" / ("seed" + std::to_string(seed))).string();
+}
+
 const Task* BatchPlan::find(const std::string& id) const
 {
 	for (const auto& t : tasks)
@@ -277,7 +290,8 @@ BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::str
 			throw ConfigError("batch '" + batchFile + "': unknown section [" + section +
 				"] (expected [batch], [grid] and [scenario:NAME] sections)");
 
-	f.onlyKeys("batch", {"output_dir", "seeds", "jobs", "vslam_ini", "set"});
+	f.onlyKeys("batch", {"output_dir", "seeds", "jobs", "vslam_ini", "set", "rbpf_slam_ini"});
+	plan.rbpfSlamIni = f.path("batch", "rbpf_slam_ini", true);
 	plan.outputDir = f.path("batch", "output_dir", false);
 	if (plan.outputDir.empty()) throw ConfigError(f.where("batch", "output_dir") + ": missing");
 	plan.seeds = parseSeeds(f.text("batch", "seeds"), f.where("batch", "seeds"));
@@ -335,6 +349,14 @@ BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::str
 		for (const int seed : plan.seeds)
 			plan.tasks.push_back({Task::Kind::Render, si, 0, seed, "render/" + s.name + "/seed" + std::to_string(seed),
 				fs::path(plan.rawlogOf(s, seed)).parent_path().string()});
+	}
+	for (size_t si = 0; si < plan.scenarios.size() && !plan.rbpfSlamIni.empty(); si++)
+	{
+		const Scenario& s = plan.scenarios[si];
+		if (s.simulIni.empty()) continue;  // only rendered rawlogs surely carry laser scans
+		for (const int seed : plan.seeds)
+			plan.tasks.push_back({Task::Kind::Peer, si, 0, seed, "peer/" + s.name + "/seed" + std::to_string(seed),
+				plan.peerDirOf(s, seed)});
 	}
 	for (size_t si = 0; si < plan.scenarios.size(); si++)
 		for (size_t vi = 0; vi < plan.variations.size(); vi++)

@@ -8,11 +8,14 @@
  *   jobs = 0                             ; runs at a time; 0: one per core
  *   vslam_ini = ../demo_rendered.ini     ; vslam's configuration
  *   set = vslam_particle_filter.sampleSize=200 ; ... for every run
+ *   rbpf_slam_ini = ../peers/rbpf-slam_gridmapping.ini ; optional: MRPT's
+ *                                        ; rbpf-slam (laser) on every rendered rawlog
  *
  *   [scenario:living_room]               ; one section per data source:
  *   simul_ini = ../simul_living_room.ini ; rendered per seed (vslam_simul.seed), or
  *   rawlog = ...  ground_truth = ...     ; fixed data (the seed varies vslam only)
- *   simul_set = vslam_simul.duration=300 ; simulator overrides
+ *   simul_set = vslam_simul.duration=300 ; simulator overrides ({seed}: the seed,
+ *                                        ; e.g. vslam_simul.world_seed={seed}: a home per seed)
  *   vslam_ini = ...  set = ...           ; per-scenario vslam overrides
  *
  *   [grid]                               ; vslam keys, values separated by spaces:
@@ -21,7 +24,8 @@
  *                                        ; each in a folder named by a hash of its settings)
  *
  * The plan is the list of tasks: rendering each simulated scenario once per
- * seed, then one vslam run per scenario, variation and seed. */
+ * seed, rbpf-slam on each rendered rawlog (if asked), then one vslam run
+ * per scenario, variation and seed. */
 #include <string>
 #include <vector>
 
@@ -53,13 +57,14 @@ struct Task
 	enum class Kind
 	{
 		Render,
+		Peer,  //!< MRPT's rbpf-slam on a rendered rawlog
 		Run
 	};
 	Kind kind = Kind::Run;
 	size_t scenario = 0;  //!< index in BatchPlan::scenarios
 	size_t variation = 0;  //!< index in BatchPlan::variations (Run only)
 	int seed = 0;
-	std::string id;  //!< "render/living_room/seed3", "run/living_room/v5c1e09a7/seed3"
+	std::string id;  //!< "render/living_room/seed3", "peer/living_room/seed3", "run/living_room/v5c1e09a7/seed3"
 	std::string dir;  //!< its output folder
 };
 
@@ -71,13 +76,19 @@ struct BatchPlan
 	std::vector<std::string> overrides;
 	std::vector<int> seeds;
 	int jobs = 0;
+	/** rbpf-slam's configuration (its peers' runs are scored beside vslam's), or empty. */
+	std::string rbpfSlamIni;
 	std::vector<Scenario> scenarios;
 	std::vector<Variation> variations;
-	std::vector<Task> tasks;  //!< every Render before every Run
+	std::vector<Task> tasks;  //!< every Render, then every Peer, then every Run
 
 	/** The rawlog and ground truth a run of \a scenario with \a seed reads. */
 	std::string rawlogOf(const Scenario& scenario, int seed) const;
 	std::string groundTruthOf(const Scenario& scenario, int seed) const;
+	/** The generated home a rendered run of \a scenario drove through, if any. */
+	std::string worldOf(const Scenario& scenario, int seed) const;
+	/** The folder of rbpf-slam's run on \a scenario with \a seed. */
+	std::string peerDirOf(const Scenario& scenario, int seed) const;
 	const Task* find(const std::string& id) const;
 };
 

@@ -40,8 +40,8 @@ BatchOutcome runBatch(
 {
 	BatchOutcome outcome;
 	size_t finished = 0;
-	runPhase(plan, Task::Kind::Render, binDir, outcome, finished, plan.tasks.size(), report);
-	runPhase(plan, Task::Kind::Run, binDir, outcome, finished, plan.tasks.size(), report);
+	for (const Task::Kind kind : {Task::Kind::Render, Task::Kind::Peer, Task::Kind::Run})
+		runPhase(plan, kind, binDir, outcome, finished, plan.tasks.size(), report);
 	return outcome;
 }
 }  // namespace vslam::batch

@@ -52,6 +52,44 @@ double total(const std::vector<Metrics>& runs, const std::string& key)
 		if (const auto it = m.find(key); it != m.end() && std::isfinite(it->second)) sum += it->second;
 	return sum;
 }
+/** The table the homes are judged by: vslam beside dead reckoning and
+ * rbpf-slam with the laser, and how often vslam is worse than dead reckoning. */
+std::string againstPeers(const BatchPlan& plan, const std::map<std::string, Metrics>& byRun)
+{
+	std::ostringstream md;
+	md << "\n| scenario | variation | runs | vslam ATE mean [m] | vslam ATE median [m] | dead reckoning ATE mean [m] | "
+		  "rbpf-slam (laser) ATE mean, aligned [m] | vslam / dead reckoning (mean ATE) | runs worse than dead reckoning |\n"
+	   << "|---|---|---|---|---|---|---|---|---|\n";
+	for (size_t si = 0; si < plan.scenarios.size(); si++)
+		for (size_t vi = 0; vi < plan.variations.size(); vi++)
+		{
+			const Scenario& s = plan.scenarios[si];
+			std::vector<Metrics> runs, peers;
+			int worse = 0;
+			double vslamSum = 0, odoSum = 0;
+			for (const auto& t : plan.tasks)
+			{
+				if (t.kind != Task::Kind::Run || t.scenario != si || t.variation != vi) continue;
+				const Metrics& m = byRun.at(t.id);
+				if (m.empty() || !m.count("ate_mean") || !m.count("odometry_ate_mean")) continue;
+				runs.push_back(m);
+				worse += m.at("ate_mean") > m.at("odometry_ate_mean");
+				vslamSum += m.at("ate_mean"), odoSum += m.at("odometry_ate_mean");
+				if (!plan.rbpfSlamIni.empty()) peers.push_back(readMetrics(plan.peerDirOf(s, t.seed) + "/metrics.txt"));
+			}
+			char ratio[32] = "-", share[48] = "-";
+			if (!runs.empty())
+			{
+				std::snprintf(ratio, sizeof ratio, "%.2f", odoSum > 0 ? vslamSum / odoSum : NAN);
+				std::snprintf(share, sizeof share, "%d / %zu", worse, runs.size());
+			}
+			md << "| " << s.name << " | " << plan.variations[vi].label() << " | " << runs.size() << " | "
+			   << cell(spreadOf(runs, "ate_mean"), "%.3f") << " | " << cell(spreadOf(runs, "ate_median"), "%.3f") << " | "
+			   << cell(spreadOf(runs, "odometry_ate_mean"), "%.3f") << " | " << cell(spreadOf(peers, "ate_aligned_mean"), "%.3f")
+			   << " | " << ratio << " | " << share << " |\n";
+		}
+	return md.str();
+}
 }  // namespace
 
 std::string writeBatchSummary(const BatchPlan& plan)
@@ -123,6 +161,7 @@ std::string writeBatchSummary(const BatchPlan& plan)
 			colours.push_back({0, 60, 220});
 			colours.push_back({220, 0, 0});
 		}
+	md << againstPeers(plan, byRun);
 	std::ofstream(plan.outputDir + "/summary.md") << md.str();
 	ChartOptions o;
 	o.title = "ATE RMSE over seeds (mean +- std): vslam (blue), odometry alone (red); "

@@ -9,9 +9,11 @@
 #include <libvslam/world/FloorPlanFile.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 
@@ -121,7 +123,7 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 
 	// The paper's figures of the run, as `vslam-eval --run` writes them.
 	std::optional<world::FloorPlan> floorPlan;
-	if (!s.world.empty()) floorPlan = world::loadFloorPlan(s.world, "/usr/share");
+	if (const std::string w = plan.worldOf(s, task.seed); !w.empty()) floorPlan = world::loadFloorPlan(w, "/usr/share");
 	RunFigureSources figures;
 	figures.estimate = &estimate;
 	figures.truth = &truth;
@@ -137,6 +139,60 @@ void writeMetrics(const std::string& file, const Metrics& m)
 	std::ofstream out(file);
 	for (const auto& [k, v] : m) out << k << " " << v << "\n";
 }
+
+/** The program on the PATH, or the bare name (its run then fails clearly). */
+std::string onPath(const std::string& program)
+{
+	const char* path = std::getenv("PATH");
+	std::stringstream dirs(path ? path : "/usr/bin");
+	for (std::string dir; std::getline(dirs, dir, ':');)
+		if (!dir.empty() && fs::exists(fs::path(dir) / program)) return (fs::path(dir) / program).string();
+	return program;
+}
+
+/** rbpf-slam's configuration for one run: its outputs into the task's folder. */
+void writePeerIni(const BatchPlan& plan, const Task& task)
+{
+	std::ifstream in(plan.rbpfSlamIni);
+	std::ofstream out(task.dir + "/rbpf-slam.ini");
+	for (std::string line; std::getline(in, line);)
+		out << (line.rfind("logOutput_dir", 0) == 0 ? "logOutput_dir = " + task.dir + "/out" : line) << "\n";
+	if (!out) throw InputError("cannot write '" + task.dir + "/rbpf-slam.ini'");
+}
+
+/** rbpf-slam's path (log_estimated_path.txt: step x y z phi ... time in
+ * column 8) against the truth, after SE(2) alignment (it starts at its
+ * own origin). */
+Metrics scorePeer(const BatchPlan& plan, const Task& task, double wallSeconds, double peakMiB)
+{
+	std::ifstream in(task.dir + "/out/log_estimated_path.txt");
+	Trajectory path;
+	for (std::string line; std::getline(in, line);)
+	{
+		std::istringstream row(line);
+		std::vector<double> v{std::istream_iterator<double>(row), {}};
+		if (v.size() >= 8) path.push_back({v[7], {v[1], v[2], v[4]}});
+	}
+	if (path.empty()) throw InputError("rbpf-slam wrote no path in '" + task.dir + "/out'");
+	writeTumTrajectory(task.dir + "/rbpf-slam.tum", path);
+	AteOptions aligned;
+	aligned.align = true;
+	const AteStats ate = computeAte(path, readTrajectory(plan.groundTruthOf(plan.scenarios[task.scenario], task.seed)), aligned);
+	return {{"ate_aligned_rmse", ate.rmse}, {"ate_aligned_mean", ate.mean}, {"ate_aligned_median", ate.median},
+		{"wall_s", wallSeconds}, {"peak_mib", peakMiB}};
+}
+
+/** The simulator overrides with {seed} replaced by the seed. */
+std::vector<std::string> withSeed(const std::vector<std::string>& set, int seed)
+{
+	std::vector<std::string> out;
+	for (std::string kv : set)
+	{
+		for (size_t at; (at = kv.find("{seed}")) != std::string::npos;) kv.replace(at, 6, std::to_string(seed));
+		out.push_back(kv);
+	}
+	return out;
+}
 }  // namespace
 
 std::vector<std::string> taskCommand(const BatchPlan& plan, const Task& task, const std::string& binDir)
@@ -148,9 +204,10 @@ std::vector<std::string> taskCommand(const BatchPlan& plan, const Task& task, co
 	{
 		args = {binDir + "/vslam-simul", s.simulIni, plan.rawlogOf(s, task.seed), "--quiet", "--set",
 			"vslam_simul.seed=" + seed};
-		for (const auto& kv : s.simulSet) args.insert(args.end(), {"--set", kv});
+		for (const auto& kv : withSeed(s.simulSet, task.seed)) args.insert(args.end(), {"--set", kv});
 		return args;
 	}
+	if (task.kind == Task::Kind::Peer) return {onPath("rbpf-slam"), task.dir + "/rbpf-slam.ini", plan.rawlogOf(s, task.seed)};
 	args = {binDir + "/vslam", s.vslamIni, plan.rawlogOf(s, task.seed), "--out", task.dir + "/vslam", "--quiet",
 		"--set", "vslam.RANDOM_SEED=" + seed, "--set", "vslam.ground_truth_file=" + plan.groundTruthOf(s, task.seed)};
 	for (const auto& list : {s.vslamSet, plan.variations[task.variation].set})
@@ -173,7 +230,7 @@ TaskOutcome runTask(const BatchPlan& plan, const Task& task, const std::string& 
 	const std::string doneFile = task.dir + "/done", logFile = task.dir + "/log.txt";
 	TaskOutcome outcome;
 	const Metrics old = readMetrics(task.dir + "/metrics.txt");
-	const bool scored = task.kind == Task::Kind::Render || (old.count("wall_s") && old.count("peak_mib"));
+	const bool scored = task.kind != Task::Kind::Run || (old.count("wall_s") && old.count("peak_mib"));
 	if (scored && fs::exists(doneFile) && readText(doneFile) == joined(command) + "\n")
 	{
 		outcome.ok = outcome.skipped = true;
@@ -197,9 +254,32 @@ TaskOutcome runTask(const BatchPlan& plan, const Task& task, const std::string& 
 	fs::create_directories(task.dir, ec);
 	if (ec) return {false, false, "cannot create '" + task.dir + "': " + ec.message()};
 	std::ofstream(logFile) << joined(command) << "\n";
+	try
+	{
+		if (task.kind == Task::Kind::Peer) writePeerIni(plan, task);
+	}
+	catch (const std::exception& e)
+	{
+		return {false, false, e.what()};
+	}
 	const ProcessResult process = runProcess(command, logFile);
 	if (!process.ok()) return {false, false, process.describe() + ", see " + logFile};
-	if (task.kind == Task::Kind::Run)
+	if (task.kind == Task::Kind::Peer)
+	{
+		try
+		{
+			const Metrics m = scorePeer(plan, task, process.wallSeconds, process.peakMiB);
+			writeMetrics(task.dir + "/metrics.txt", m);
+			char line[120];
+			std::snprintf(line, sizeof line, "rbpf-slam ATE mean %.3f m (aligned), %.1f s", m.at("ate_aligned_mean"), process.wallSeconds);
+			outcome.message = line;
+		}
+		catch (const std::exception& e)
+		{
+			return {false, false, std::string("scoring failed: ") + e.what()};
+		}
+	}
+	else if (task.kind == Task::Kind::Run)
 	{
 		try
 		{

@@ -44,5 +44,5 @@ class PathPlanner
  * clearance (room centres, hall junctions) at least `spacing` apart,
  * visited in a short order from the one nearest `start`, joined by planned
  * legs and closed back to the first stop. The waypoints start at `start`. */
-std::vector<Eigen::Vector2d> homeTour(const FreeSpace& freeSpace, const Eigen::Vector2d& start, double spacing = 1.8);
+std::vector<Eigen::Vector2d> homeTour(const FreeSpace& freeSpace, const Eigen::Vector2d& start, double spacing = 2.5);
 }  // namespace vslam::world
