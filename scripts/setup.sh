@@ -87,7 +87,7 @@ case "$MODE" in
     "$BUILD/bin/vslam" config_ini/demo_rendered.ini
     echo "[setup] errors and figures: build/bin/vslam-eval --run vslam_out_demo rawlogs/demo_rendered_groundtruth.tum"
     "$BUILD/bin/vslam-eval" --run vslam_out_demo rawlogs/demo_rendered_groundtruth.tum \
-      --world config_ini/worlds/living_room.world --plot vslam_out_demo/paths.png | grep -v '^figure:'
+      --world rawlogs/demo_rendered_world.world --plot vslam_out_demo/paths.png | grep -v '^figure:'
     cp rawlogs/demo_rendered_preview.png vslam_out_demo/simulation_preview.png
     echo "[setup] outputs in $ROOT/vslam_out_demo/: run_summary.yaml (errors against the ground truth),"
     echo "[setup]   estimated_path.tum, log_estimated_path.txt, final_map.txt, paths.png (estimate, truth,"

@@ -3,8 +3,8 @@
  *   vslam-image-stats RAWLOG TRUE_PATH [--config INI] [--set vslam_frontend.KEY=VALUE ...]
  *
  * Prints SIFT features per image (the front-end's settings), and matches
- * (ratio test, then RANSAC fundamental-matrix inliers) between consecutive
- * images and at revisits (images 30 s or more apart taken within 0.3 m and
+ * (ratio test, then RANSAC fundamental-matrix inliers) between images 1 s
+ * apart and at revisits (images 30 s or more apart taken within 0.3 m and
  * 15 deg of each other, by the true path TRUE_PATH). */
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
@@ -36,13 +36,14 @@ int main(int argc, const char** argv)
 		if (positional.size() != 2) throw std::invalid_argument("expected RAWLOG TRUE_PATH");
 		const auto s = computeImageSequenceStats(
 			positional[0], readTrajectory(positional[1]), loadFrontEndOptions(args.value("--config"), args.overrides));
-		std::printf("vslam-image-stats: %zu images; SIFT features per image: median %.0f, min %.0f, %zu images under 100\n",
-			s.images, s.medianFeatures, s.minFeatures, s.imagesUnder100Features);
+		std::printf("vslam-image-stats: %zu images; SIFT features per image: median %.0f, min %.0f, %zu images (%.0f%%) under 80\n",
+			s.images, s.medianFeatures, s.minFeatures, s.imagesUnder80Features,
+			s.images ? 100.0 * s.imagesUnder80Features / s.images : 0.0);
 		const auto row = [](const char* what, const MatchStats& m) {
 			std::printf("vslam-image-stats: %-12s %5zu pairs, median %4.0f matches, median %4.0f inliers, %zu pairs under 20 inliers\n",
 				what, m.pairs, m.medianMatches, m.medianInliers, m.pairsWithUnder20Inliers);
 		};
-		row("consecutive", s.consecutive);
+		row("1 s apart", s.apart);
 		row("revisits", s.revisits);
 		return 0;
 	});

@@ -80,13 +80,18 @@ ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, cons
 	for (const auto& f : frames)
 	{
 		counts.push_back(static_cast<double>(f.features.size()));
-		s.imagesUnder100Features += f.features.size() < 100;
+		s.featureCounts.push_back(f.features.size());
+		s.imagesUnder80Features += f.features.size() < 80;
 	}
 	s.minFeatures = counts.empty() ? 0 : *std::min_element(counts.begin(), counts.end());
 	s.medianFeatures = median(counts);
 
-	std::vector<std::pair<size_t, size_t>> consecutive, revisits;
-	for (size_t j = 1; j < frames.size(); j++) consecutive.push_back(matchPair(frames[j - 1], frames[j], frontEnd.match_ratio));
+	std::vector<std::pair<size_t, size_t>> apart, revisits;
+	for (size_t i = 0, j = 0; i < frames.size(); i++)
+	{
+		while (j < frames.size() && frames[j].t < frames[i].t + o.pairSeconds - 1e-6) j++;
+		if (j < frames.size()) apart.push_back(matchPair(frames[i], frames[j], frontEnd.match_ratio));
+	}
 	for (size_t j = 0; j < frames.size(); j++)
 	{
 		const auto pj = interpolate(truth, frames[j].t, 1.0);
@@ -102,7 +107,7 @@ ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, cons
 		}
 		if (bestI < frames.size()) revisits.push_back(matchPair(frames[bestI], frames[j], frontEnd.match_ratio));
 	}
-	s.consecutive = summarize(consecutive);
+	s.apart = summarize(apart);
 	s.revisits = summarize(revisits);
 	return s;
 }

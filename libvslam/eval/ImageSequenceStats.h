@@ -2,19 +2,21 @@
 /** \file ImageSequenceStats.h
  * Is an image sequence good for the visual front-end? SIFT features per
  * image, and matches (Lowe's ratio test, then the inliers of a RANSAC
- * fundamental matrix) between consecutive images and at revisits: pairs
- * of images taken at least `revisitMinSeconds` apart from nearly the same
- * true pose. Used on vslam-simul's rendered rawlogs (vslam-image-stats).
+ * fundamental matrix) between images `pairSeconds` apart and at revisits:
+ * pairs of images taken at least `revisitMinSeconds` apart from nearly the
+ * same true pose. Used on vslam-simul's rendered rawlogs (vslam-image-stats).
  */
 #include <libvslam/eval/Trajectory.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 
 #include <string>
+#include <vector>
 
 namespace vslam
 {
 struct ImageSequenceStatsOptions
 {
+	double pairSeconds = 1;  //!< each image against the first one this much later
 	double revisitMinSeconds = 30;
 	double revisitMaxDistance = 0.3;  //!< m between the true poses
 	double revisitMaxAngle = 15 * M_PI / 180;  //!< rad
@@ -31,8 +33,9 @@ struct ImageSequenceStats
 {
 	size_t images = 0;
 	double minFeatures = 0, medianFeatures = 0;
-	size_t imagesUnder100Features = 0;
-	MatchStats consecutive, revisits;
+	size_t imagesUnder80Features = 0;
+	std::vector<size_t> featureCounts;  //!< per image, in order
+	MatchStats apart, revisits;  //!< pairSeconds apart; revisits
 };
 
 /** Reads the camera images of a rawlog (either format) and the true robot

@@ -36,9 +36,16 @@ void writeTrajectoryPlot(const world::FloorPlan* plan, const std::vector<PlotSer
 			for (const auto& c : poly) pts.push_back(px(c[0], c[1]));
 			cv::fillConvexPoly(img, pts, cv::Scalar(110, 110, 110), cv::LINE_AA);
 		}
-		for (const auto& d : plan->doors) cv::line(img, px(d.a[0], d.a[1]), px(d.b[0], d.b[1]), cv::Scalar(60, 110, 170), 3);
-		for (const auto& q : plan->pictures)
-			cv::line(img, px(q.a[0], q.a[1]), px(q.b[0], q.b[1]), cv::Scalar(200, 140, 200), 3);
+		const cv::Scalar doorColour(60, 110, 170);
+		for (const auto& d : plan->doors) cv::line(img, px(d.a[0], d.a[1]), px(d.b[0], d.b[1]), doorColour, 3);
+		for (const auto& o : plan->openings)
+			if (o.kind == world::Opening::Kind::Doorway && o.hasLeaf)
+			{
+				const auto [hinge, end] = world::doorLeaf(*plan, o);
+				cv::line(img, px(hinge[0], hinge[1]), px(end[0], end[1]), doorColour, 2);
+			}
+		for (const auto& q : plan->pictures)  // on the wall's face, not over its doorways
+			if (q.framed) cv::line(img, px(q.a[0], q.a[1]), px(q.b[0], q.b[1]), cv::Scalar(200, 140, 200), 1);
 	}
 	const cv::Scalar landmarkColour(0, 140, 255);
 	for (const auto& l : landmarks)

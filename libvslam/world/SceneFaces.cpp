@@ -10,17 +10,11 @@ namespace
 {
 using Triangle = mrpt::opengl::TTriangle;
 
-mrpt::opengl::CSetOfTexturedTriangles::Ptr texturedSet(const SurfaceImage& surface)
-{
-	auto set = mrpt::opengl::CSetOfTexturedTriangles::Create();
-	set->assignImage(mrpt::img::CImage(surface.image, mrpt::img::DEEP_COPY));
-	set->enableTextureLinearInterpolation(true);
-	return set;
-}
-
-/** A quad p0 p1 p2 p3 (counter-clockwise seen from its front) with its UVs. */
-void addQuad(mrpt::opengl::CSetOfTexturedTriangles& set, const std::array<Eigen::Vector3d, 4>& p,
-	const std::array<Eigen::Vector2d, 4>& uv, const Eigen::Vector3d& normal)
+/** A quad p0 p1 p2 p3 (counter-clockwise seen from its front) with its UVs
+ * and vertex colour. */
+template <class Set>
+void addQuad(Set& set, const std::array<Eigen::Vector3d, 4>& p, const std::array<Eigen::Vector2d, 4>& uv,
+	const Eigen::Vector3d& normal, const mrpt::img::TColor& colour = {255, 255, 255})
 {
 	for (const auto& idx : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}})
 	{
@@ -30,7 +24,7 @@ void addQuad(mrpt::opengl::CSetOfTexturedTriangles& set, const std::array<Eigen:
 			auto& v = t.vertices[static_cast<size_t>(k)];
 			const auto& q = p[static_cast<size_t>(idx[static_cast<size_t>(k)])];
 			v.xyzrgba.pt = {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())};
-			v.xyzrgba.r = v.xyzrgba.g = v.xyzrgba.b = v.xyzrgba.a = 255;
+			v.setColor(colour);
 			const auto& w = uv[static_cast<size_t>(idx[static_cast<size_t>(k)])];
 			v.uv = {static_cast<float>(w.x()), static_cast<float>(w.y())};
 			v.normal = {static_cast<float>(normal.x()), static_cast<float>(normal.y()), static_cast<float>(normal.z())};
@@ -39,6 +33,14 @@ void addQuad(mrpt::opengl::CSetOfTexturedTriangles& set, const std::array<Eigen:
 	}
 }
 }  // namespace
+
+mrpt::opengl::CSetOfTexturedTriangles::Ptr texturedSet(const SurfaceImage& surface)
+{
+	auto set = mrpt::opengl::CSetOfTexturedTriangles::Create();
+	set->assignImage(mrpt::img::CImage(surface.image, mrpt::img::DEEP_COPY));
+	set->enableTextureLinearInterpolation(true);
+	return set;
+}
 
 std::vector<FaceRect> faceMinusHoles(double len, double z0, double z1, const std::vector<FaceRect>& holes)
 {
@@ -67,11 +69,11 @@ std::vector<FaceRect> faceMinusHoles(double len, double z0, double z1, const std
 	return out;
 }
 
-mrpt::opengl::CSetOfTexturedTriangles::Ptr verticalFace(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+void addVerticalFace(mrpt::opengl::CSetOfTexturedTriangles& set, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 	double z0, double z1, const std::vector<FaceRect>& holes, const SurfaceImage& surface)
 {
-	auto set = texturedSet(surface);
 	const double len = (b - a).norm();
+	if (len < 1e-9) return;
 	const Eigen::Vector2d d = (b - a) / len;
 	const Eigen::Vector3d normal(-d[1], d[0], 0);
 	const auto point = [&](double s, double z) { return Eigen::Vector3d(a[0] + s * d[0], a[1] + s * d[1], z); };
@@ -80,15 +82,27 @@ mrpt::opengl::CSetOfTexturedTriangles::Ptr verticalFace(const Eigen::Vector2d& a
 		return {(len - s) / len, (z - z0) / (z1 - z0)};
 	};
 	for (const FaceRect& r : faceMinusHoles(len, z0, z1, holes))
-		addQuad(*set, {point(r.s0, r.z0), point(r.s0, r.z1), point(r.s1, r.z1), point(r.s1, r.z0)},
+		addQuad(set, {point(r.s0, r.z0), point(r.s0, r.z1), point(r.s1, r.z1), point(r.s1, r.z0)},
 			{uv(r.s0, r.z0), uv(r.s0, r.z1), uv(r.s1, r.z1), uv(r.s1, r.z0)}, normal);
-	return set;
 }
 
-mrpt::opengl::CSetOfTexturedTriangles::Ptr horizontalFace(
-	const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double z, bool up, const SurfaceImage& surface)
+void addPlainFace(mrpt::opengl::CSetOfTriangles& set, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double z0,
+	double z1, const std::vector<FaceRect>& holes, const mrpt::img::TColor& colour)
 {
-	auto set = texturedSet(surface);
+	const double len = (b - a).norm();
+	if (len < 1e-9) return;
+	const Eigen::Vector2d d = (b - a) / len;
+	const Eigen::Vector3d normal(-d[1], d[0], 0);
+	const auto point = [&](double s, double z) { return Eigen::Vector3d(a[0] + s * d[0], a[1] + s * d[1], z); };
+	const Eigen::Vector2d none(0, 0);
+	for (const FaceRect& r : faceMinusHoles(len, z0, z1, holes))
+		addQuad(set, {point(r.s0, r.z0), point(r.s0, r.z1), point(r.s1, r.z1), point(r.s1, r.z0)}, {none, none, none, none},
+			normal, colour);
+}
+
+void addHorizontalFace(mrpt::opengl::CSetOfTexturedTriangles& set, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+	double z, bool up, const SurfaceImage& surface)
+{
 	const auto point = [&](double x, double y) { return Eigen::Vector3d(x, y, z); };
 	const auto uv = [&](double x, double y) -> Eigen::Vector2d {
 		if (surface.tiled) return {x / surface.tileWidth, y / surface.tileHeight};
@@ -97,8 +111,7 @@ mrpt::opengl::CSetOfTexturedTriangles::Ptr horizontalFace(
 	std::array<Eigen::Vector3d, 4> p{point(lo[0], lo[1]), point(hi[0], lo[1]), point(hi[0], hi[1]), point(lo[0], hi[1])};
 	std::array<Eigen::Vector2d, 4> w{uv(lo[0], lo[1]), uv(hi[0], lo[1]), uv(hi[0], hi[1]), uv(lo[0], hi[1])};
 	if (!up) std::swap(p[1], p[3]), std::swap(w[1], w[3]);
-	addQuad(*set, p, w, Eigen::Vector3d(0, 0, up ? 1 : -1));
-	return set;
+	addQuad(set, p, w, Eigen::Vector3d(0, 0, up ? 1 : -1));
 }
 
 mrpt::opengl::CBox::Ptr plainBox(const Eigen::Vector2d& start, const Eigen::Vector2d& dir, double length,

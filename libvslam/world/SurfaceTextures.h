@@ -37,6 +37,13 @@ class SurfaceTextures
 	/** Mean colour of what a texture shows (for plain parts beside it). */
 	cv::Scalar meanColour(const TextureRef& t);
 
+	/** Forgets the decoded photographs (the scene keeps what it shows). */
+	void release()
+	{
+		m_photos.clear();
+		m_tiles.clear();
+	}
+
    private:
 	const FloorPlan& m_plan;
 	int m_maxSide;

@@ -12,14 +12,6 @@ namespace
 {
 const mrpt::img::TColor kPaint(236, 234, 228), kFrame(70, 52, 40), kWhiteFrame(232, 232, 226);
 
-/** A one-colour surface (the unpapered side of a wall). */
-SurfaceImage plain(const mrpt::img::TColor& c)
-{
-	SurfaceImage s;
-	s.image = cv::Mat(2, 2, CV_8UC3, cv::Scalar(c.B, c.G, c.R));
-	return s;
-}
-
 Eigen::Vector2d leftOf(const Eigen::Vector2d& d) { return {-d[1], d[0]}; }
 
 /** Wall i's holes, measured from `reversed` ? its end : its start. */
@@ -37,7 +29,8 @@ WorldScene::WorldScene(const FloorPlan& plan, size_t peopleCount, int maxTexture
 	: m_plan(plan),
 	  m_scene(mrpt::opengl::COpenGLScene::Create()),
 	  m_textures(plan, maxTextureSide),
-	  m_furniture(plan.textureDir)
+	  m_furniture(plan.textureDir),
+	  m_plainFaces(mrpt::opengl::CSetOfTriangles::Create())
 {
 	// Mostly diffuse light from above (MRPT has one directional light):
 	// walls differ in brightness by their facing as in a real room, and the
@@ -57,9 +50,37 @@ WorldScene::WorldScene(const FloorPlan& plan, size_t peopleCount, int maxTexture
 	addPictures();
 	addDoors();
 	addPeople(peopleCount);
+	insert(m_plainFaces);
+	m_textures.release();  // full-size photographs: a few hundred MB in a decorated home
 }
 
 void WorldScene::insert(const mrpt::opengl::CRenderizable::Ptr& object) { m_scene->insert(object); }
+
+std::pair<mrpt::opengl::CSetOfTexturedTriangles*, SurfaceImage> WorldScene::faceFor(
+	const TextureRef& t, double width, double height, double along)
+{
+	SurfaceImage surface = m_textures.surface(t, width, height, along);
+	if (t.material < 0)
+	{
+		auto set = texturedSet(surface);
+		insert(set);
+		return {set.get(), surface};
+	}
+	auto& set = m_materialFaces[t.material];
+	if (!set)
+	{
+		set = texturedSet(surface);
+		insert(set);
+	}
+	return {set.get(), surface};
+}
+
+void WorldScene::addFace(const TextureRef& t, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double z0, double z1,
+	const std::vector<FaceRect>& holes, double along)
+{
+	const auto [set, surface] = faceFor(t, (b - a).norm(), z1 - z0, along);
+	addVerticalFace(*set, a, b, z0, z1, holes, surface);
+}
 
 void WorldScene::addWalls()
 {
@@ -69,14 +90,16 @@ void WorldScene::addWalls()
 		const Wall& w = m_plan.walls[i];
 		const double len = (w.b - w.a).norm();
 		const Eigen::Vector2d off = 0.5 * w.thickness * leftOf((w.b - w.a) / len);
-		insert(verticalFace(w.a + off, w.b + off, 0, H, holesOf(m_plan, i, false), m_textures.surface(w.front, len, H)));
-		insert(verticalFace(w.b - off, w.a - off, 0, H, holesOf(m_plan, i, true),
-			w.hasBack ? m_textures.surface(w.back, len, H) : plain(kPaint)));
+		addFace(w.front, w.a + off, w.b + off, 0, H, holesOf(m_plan, i, false));
+		if (w.hasBack)
+			addFace(w.back, w.b - off, w.a - off, 0, H, holesOf(m_plan, i, true));
+		else
+			addPlainFace(*m_plainFaces, w.b - off, w.a - off, 0, H, holesOf(m_plan, i, true), kPaint);
 		for (const auto& [s0, s1] : m_plan.wallPieces(i))  // the cut ends, seen from the doorways
 		{
 			const Eigen::Vector2d a = alongWall(w, s0), b = alongWall(w, s1);
-			insert(verticalFace(a - off, a + off, 0, H, {}, plain(kPaint)));
-			insert(verticalFace(b + off, b - off, 0, H, {}, plain(kPaint)));
+			addPlainFace(*m_plainFaces, a - off, a + off, 0, H, {}, kPaint);
+			addPlainFace(*m_plainFaces, b + off, b - off, 0, H, {}, kPaint);
 		}
 	}
 }
@@ -102,8 +125,7 @@ void WorldScene::addOpenings()
 			insert(plainBox(a + 0.5 * (width - 0.05) * d, d, 0.05, n, 0.05, o.z0, o.z1, kWhiteFrame));
 			const double D = 5.0 + 0.05 * static_cast<double>(windows++);
 			const Eigen::Vector2d viewA = a - (0.5 * t + D) * n - 1.6 * D * d, viewB = b - (0.5 * t + D) * n + 1.6 * D * d;
-			const double z0 = o.z0 - 0.8 * D, z1 = o.z1 + 0.5 * D;
-			insert(verticalFace(viewA, viewB, z0, z1, {}, m_textures.surface(o.texture, (viewB - viewA).norm(), z1 - z0)));
+			addFace(o.texture, viewA, viewB, o.z0 - 0.8 * D, o.z1 + 0.5 * D);
 		}
 		for (const double side : {1.0, -1.0})  // casings on both faces
 		{
@@ -116,9 +138,9 @@ void WorldScene::addOpenings()
 		{
 			const auto [hinge, end] = doorLeaf(m_plan, o);
 			const Eigen::Vector2d ld = (end - hinge).normalized(), ln = leftOf(ld);
-			const double len = (end - hinge).norm(), h = o.z1 - 0.01;
-			insert(verticalFace(hinge + 0.02 * ln, end + 0.02 * ln, 0, h, {}, m_textures.surface(o.texture, len, h, 0.0)));
-			insert(verticalFace(end - 0.02 * ln, hinge - 0.02 * ln, 0, h, {}, m_textures.surface(o.texture, len, h, 1.0)));
+			const double h = o.z1 - 0.01;
+			addFace(o.texture, hinge + 0.02 * ln, end + 0.02 * ln, 0, h, {}, 0.0);
+			addFace(o.texture, end - 0.02 * ln, hinge - 0.02 * ln, 0, h, {}, 1.0);
 		}
 	}
 }
@@ -126,16 +148,32 @@ void WorldScene::addOpenings()
 void WorldScene::addFloorAndCeiling()
 {
 	const auto [lo, hi] = m_plan.bounds();
-	insert(horizontalFace(lo, hi, 0, true,
-		m_plan.hasFloorTexture ? m_textures.surface(m_plan.floor, hi[0] - lo[0], hi[1] - lo[1]) : plain({150, 140, 125})));
+	const auto horizontal = [&](const TextureRef& t, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double z, bool up) {
+		const auto [set, surface] = faceFor(t, b[0] - a[0], b[1] - a[1]);
+		addHorizontalFace(*set, a, b, z, up, surface);
+	};
+	if (m_plan.hasFloorTexture)
+		horizontal(m_plan.floor, lo, hi, 0, true);
+	else
+	{
+		auto floor = mrpt::opengl::CTexturedPlane::Create(lo[0], hi[0], lo[1], hi[1]);
+		floor->setColor_u8(150, 140, 125);
+		insert(floor);
+	}
 	for (size_t k = 0; k < m_plan.floorAreas.size(); k++)
 	{
 		const FloorArea& a = m_plan.floorAreas[k];
-		insert(horizontalFace(a.lo, a.hi, 0.001 * static_cast<double>(k + 1), true,
-			m_textures.surface(a.texture, a.hi[0] - a.lo[0], a.hi[1] - a.lo[1])));
+		horizontal(a.texture, a.lo, a.hi, 0.001 * static_cast<double>(k + 1), true);
 	}
-	insert(horizontalFace(lo, hi, m_plan.ceilingHeight, false,
-		m_plan.hasCeilingTexture ? m_textures.surface(m_plan.ceiling, hi[0] - lo[0], hi[1] - lo[1]) : plain({235, 235, 228})));
+	if (m_plan.hasCeilingTexture)
+		horizontal(m_plan.ceiling, lo, hi, m_plan.ceilingHeight, false);
+	else
+	{
+		auto ceiling = mrpt::opengl::CTexturedPlane::Create(lo[0], hi[0], lo[1], hi[1]);
+		ceiling->setColor_u8(235, 235, 228);
+		ceiling->setLocation(0, 0, m_plan.ceilingHeight);
+		insert(ceiling);
+	}
 }
 
 void WorldScene::addSkirting()
@@ -152,7 +190,7 @@ void WorldScene::addSkirting()
 				const Eigen::Vector2d off = (0.5 * w.thickness + 0.012) * side * n;
 				Eigen::Vector2d a = alongWall(w, s0) + off, b = alongWall(w, s1) + off;
 				if (side < 0) std::swap(a, b);
-				insert(verticalFace(a, b, 0, h, {}, m_textures.surface(m_plan.skirting, s1 - s0, h)));
+				addFace(m_plan.skirting, a, b, 0, h);
 			}
 	}
 }
@@ -164,20 +202,24 @@ void WorldScene::addBoxes()
 		// The photograph's chosen region is wrapped around the box's sides.
 		const auto c = footprint(b);
 		const double perimeter = 2 * (b.sizeX + b.sizeY);
-		const SurfaceImage wrap = m_textures.surface(b.texture, perimeter, b.height);
+		const auto [wrapSet, wrap] = faceFor(b.texture, perimeter, b.height);
 		double start = 0;
 		for (size_t i = 0; i < 4; i++)
 		{
 			const double len = (c[(i + 1) % 4] - c[i]).norm();
-			SurfaceImage side = wrap;
-			if (!wrap.tiled)
+			if (wrap.tiled)
+				addVerticalFace(*wrapSet, c[i], c[(i + 1) % 4], 0, b.height, {}, wrap);
+			else
 			{
+				SurfaceImage side = wrap;
 				const int x0 = static_cast<int>(std::round(start / perimeter * wrap.image.cols));
 				const int x1 = std::max(x0 + 1, static_cast<int>(std::round((start + len) / perimeter * wrap.image.cols)));
 				side.image = wrap.image.colRange(x0, std::min(x1, wrap.image.cols)).clone();
+				auto set = texturedSet(side);
+				addVerticalFace(*set, c[i], c[(i + 1) % 4], 0, b.height, {}, side);
+				insert(set);
 			}
 			start += len;
-			insert(verticalFace(c[i], c[(i + 1) % 4], 0, b.height, {}, side));
 		}
 		auto top = mrpt::opengl::CTexturedPlane::Create(-b.sizeX / 2, b.sizeX / 2, -b.sizeY / 2, b.sizeY / 2);
 		top->assignImage(mrpt::img::CImage(m_textures.surface(b.texture, b.sizeX, b.sizeY, 0.0).image, mrpt::img::DEEP_COPY));
@@ -198,7 +240,7 @@ void WorldScene::addPictures()
 	{
 		const double len = (q.b - q.a).norm();
 		const Eigen::Vector2d d = (q.b - q.a) / len, n = leftOf(d);
-		insert(verticalFace(q.a + 0.02 * n, q.b + 0.02 * n, q.z0, q.z1, {}, m_textures.surface(q.texture, len, q.z1 - q.z0)));
+		addFace(q.texture, q.a + 0.02 * n, q.b + 0.02 * n, q.z0, q.z1);
 		if (!q.framed) continue;
 		const double f = 0.025;  // the frame around it
 		insert(plainBox(q.a - f * d, d, f, n, 0.025, q.z0 - f, q.z1 + f, kFrame));
@@ -213,18 +255,21 @@ void WorldScene::addDoors()
 	for (const Door& door : m_plan.doors)
 	{
 		const Eigen::Vector2d d = (door.b - door.a).normalized(), n = leftOf(d);
-		const double len = (door.b - door.a).norm(), h = std::min(door.height, m_plan.ceilingHeight);
-		insert(verticalFace(door.a + 0.02 * n, door.b + 0.02 * n, 0, h, {}, m_textures.surface(door.texture, len, h, 0.0)));
-		insert(verticalFace(door.b - 0.02 * n, door.a - 0.02 * n, 0, h, {}, m_textures.surface(door.texture, len, h, 1.0)));
+		const double h = std::min(door.height, m_plan.ceilingHeight);
+		addFace(door.texture, door.a + 0.02 * n, door.b + 0.02 * n, 0, h, {}, 0.0);
+		addFace(door.texture, door.b - 0.02 * n, door.a - 0.02 * n, 0, h, {}, 1.0);
 	}
 }
 
 void WorldScene::addPeople(size_t count)
 {
+	// Three figures at most, shared by everyone walking through: every
+	// model's textures take texture units of their own.
 	const auto figures = furnitureOfRole(FurnitureRole::Person);
+	const size_t kinds = std::min<size_t>(3, figures.size());
 	for (size_t i = 0; i < count; i++)
 	{
-		auto person = m_furniture.place(*figures[i % figures.size()], {0, 0}, 0, 0);
+		auto person = m_furniture.place(*figures[(i % kinds) * figures.size() / kinds], {0, 0}, 0, 0);
 		person->setVisibility(false);
 		insert(person);
 		m_people.push_back(person);

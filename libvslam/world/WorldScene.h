@@ -9,10 +9,14 @@
  */
 #include <libvslam/world/FloorPlan.h>
 #include <libvslam/world/FurnitureModels.h>
+#include <libvslam/world/SceneFaces.h>
 #include <libvslam/world/SurfaceTextures.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CSetOfTexturedTriangles.h>
+#include <mrpt/opengl/CSetOfTriangles.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,6 +42,15 @@ class WorldScene
 	SurfaceTextures m_textures;
 	FurnitureModels m_furniture;
 	std::vector<mrpt::opengl::CSetOfObjects::Ptr> m_people;
+	std::map<int, mrpt::opengl::CSetOfTexturedTriangles::Ptr> m_materialFaces;  //!< by material
+	mrpt::opengl::CSetOfTriangles::Ptr m_plainFaces;
+
+	/** The object a surface showing `t` goes into (one per material, a new
+	 * one per photograph) and the image mapped on it. */
+	std::pair<mrpt::opengl::CSetOfTexturedTriangles*, SurfaceImage> faceFor(
+		const TextureRef& t, double width, double height, double along = 0.5);
+	void addFace(const TextureRef& t, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double z0, double z1,
+		const std::vector<FaceRect>& holes = {}, double along = 0.5);
 
 	void addWalls();
 	void addOpenings();

@@ -46,7 +46,7 @@ TEST(VslamSimul, WritesARawlogThatVslamAndRbpfSlamBothRun)
 	const auto sim = runCommand(kBin + "vslam-simul '" + kSource + "/config_ini/simul_demo.ini' '" + rawlog +
 		"' --quiet --set vslam_simul.duration=40");
 	ASSERT_EQ(sim.exitCode, 0) << sim.output;
-	EXPECT_TRUE(contains(sim.output, "200 steps (40 s simulated), 100 images")) << sim.output;
+	EXPECT_TRUE(contains(sim.output, "200 steps (40 s simulated), 200 images")) << sim.output;
 	for (const char* f : {"sim_groundtruth.tum", "sim_odometry.tum", "sim_preview.png", "sim_Images/img_2.jpg"})
 		EXPECT_TRUE(fs::exists(dir.path() / f)) << f;
 	EXPECT_EQ(dataRows((dir.path() / "sim_groundtruth.tum").string()), 200u);
@@ -57,7 +57,7 @@ TEST(VslamSimul, WritesARawlogThatVslamAndRbpfSlamBothRun)
 		(dir.path() / "sim_groundtruth.tum").string());
 	ASSERT_EQ(v.exitCode, 0) << v.output;
 	const std::string summary = readFile((dir.path() / "vslam_out/run_summary.yaml").string());
-	EXPECT_TRUE(contains(summary, "images: 100")) << summary;
+	EXPECT_TRUE(contains(summary, "images: 200")) << summary;
 	EXPECT_EQ(dataRows((dir.path() / "vslam_out/estimated_path.tum").string()), 200u);
 
 	// rbpf-slam: grid mapping with the laser of the same rawlog.
