@@ -17,8 +17,10 @@
 #include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/sim/SimulatedWorld.h>
 #include <libvslam/world/FloorPlanFile.h>
+#include <libvslam/world/FurnitureCatalog.h>
 #include <mrpt/system/CTicTac.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -27,17 +29,28 @@ namespace
 {
 const char* kUsage =
 	"Usage: vslam-simul CONFIG.ini OUTPUT.rawlog [--set vslam_simul.KEY=VALUE ...] [--quiet]\n"
-	"       vslam-simul --print-default-config\n";
+	"       vslam-simul --print-default-config\n"
+	"       vslam-simul --list-furniture\n";
 }
 
 int main(int argc, const char** argv)
 {
 	using namespace vslam;
 	return vslam::runTool("vslam-simul", kUsage, [&]() -> int {
-		const ToolArguments args = parseToolArguments(argc, argv, {}, {"--help", "--print-default-config", "--quiet"});
+		const ToolArguments args =
+			parseToolArguments(argc, argv, {}, {"--help", "--print-default-config", "--list-furniture", "--quiet"});
 		if (args.has("--help"))
 		{
 			std::cout << kUsage;
+			return 0;
+		}
+		if (args.has("--list-furniture"))
+		{
+			// The names a world file's "furniture" item takes, with their sizes.
+			std::printf("%-24s %7s %7s %7s %9s  model (under texture_dir)\n", "name", "width", "depth", "height", "elevation");
+			for (const auto& item : world::furnitureCatalog())
+				std::printf("%-24s %7.3f %7.3f %7.3f %9.3f  %s\n", item.name.c_str(), item.width, item.depth, item.height,
+					item.elevation, item.model.c_str());
 			return 0;
 		}
 		if (args.has("--print-default-config"))
