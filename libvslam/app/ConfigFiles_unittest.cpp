@@ -9,6 +9,7 @@
 #include <libvslam/models/CMotionModel.h>
 #include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
+#include <libvslam/sim/SimulatedWorld.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -161,12 +162,18 @@ TEST(ConfigFiles, RenderedSimulatorIniFilesLoadAndTheExampleShowsTheDefaults)
 		std::ifstream in(e.path());
 		std::stringstream text;
 		text << in.rdbuf();
-		// The options load, and the world file and the path or people in it
-		// are valid (textures exist, waypoints are collision-free).
+		// The options load, and the world (its file, or the home generated
+		// from world_seed) and the path or people in it are valid (textures
+		// exist, waypoints are collision-free).
 		TVisualSimOptions o;
 		ASSERT_NO_THROW(o = loadVisualSimOptions(text.str(), {}, kConfigDir.string()));
-		const auto plan = world::loadFloorPlan(o.world_file, o.texture_dir);
-		EXPECT_NO_THROW(CVisualSimulator(o, plan));
+		if (o.world_seed != 0 && !fs::is_directory("/usr/share/sweethome3d/furniture"))
+		{
+			std::printf("%s: not generated, sweethome3d-furniture is not installed\n", e.path().filename().c_str());
+			continue;
+		}
+		const auto world = loadSimulatedWorld(o);
+		EXPECT_NO_THROW(CVisualSimulator(o, world.plan));
 		checked++;
 	}
 	EXPECT_GE(checked, 6u);
