@@ -256,6 +256,8 @@ int CVSlamApp::run()
 	CPathFileWriter pathTum(out("estimated_path.tum"), CPathFileWriter::Format::Tum);
 	CPathFileWriter pathOdo(out("log_odometry_path.txt"), CPathFileWriter::Format::RbpfSlamOdometry);
 	CPathFileWriter pathOdoTum(out("odometry_path.tum"), CPathFileWriter::Format::Tum);
+	CPathFileWriter pathSmoothed(out("smoothed_path.tum"), CPathFileWriter::Format::Tum);
+	CSmoothedPose controllerPose(filterOptions.smoothedPose);  // smoothed_path.tum
 	FILE* stepLog = std::fopen(out("log_filter_steps.txt").c_str(), "wt");
 	if (!stepLog) throw InputError("cannot create output file '" + out("log_filter_steps.txt") + "'");
 	std::fprintf(stepLog,
@@ -284,8 +286,10 @@ int CVSlamApp::run()
 				break;
 			}
 			const auto t0 = std::chrono::steady_clock::now();
+			se2::Pose stepIncrement{0, 0, 0};
 			if (step.action)
-				if (const auto u = odometryIncrement(*step.action)) odo = se2::compose(odo, u->asTPose());
+				if (const auto u = odometryIncrement(*step.action))
+					stepIncrement = u->asTPose(), odo = se2::compose(odo, stepIncrement);
 			if (hasImages(*step.sf))
 			{
 				// Camera images: the front-end turns them into measurements.
@@ -318,6 +322,7 @@ int CVSlamApp::run()
 			// previous step's, so the TUM output stays ordered.
 			const bool timed = step.timestamp != INVALID_TIMESTAMP;
 			const double t = timed ? toSeconds(step.timestamp) : lastT;
+			const double dt = anyTimed ? t - lastT : 0;
 			if (timed && !anyTimed) firstT = t;
 			anyTimed = anyTimed || timed;
 			lastT = t;
@@ -331,6 +336,8 @@ int CVSlamApp::run()
 			odometry.push_back({t, odo, stepIndex});
 			const auto& fr = filter.lastFrame();
 			const bool updated = fr.timestamp == step.timestamp && filter.stats().frames > 0;
+			pathSmoothed.write(summary.steps, t,
+				controllerPose.update(stepIncrement, dt, est, updated && (fr.kidnapDeclared || fr.kidnapReverted)));
 			// The particle cloud's spread: weighted standard deviation of the
 			// position (sqrt of the covariance's trace) and of the heading.
 			const Eigen::Matrix3d cov = filter.poseCovariance();

@@ -45,7 +45,7 @@ double yamlNumber(const std::string& yaml, const std::string& key)
 
 /** Bumped whenever the metrics change: finished runs are then scored again
  * from their outputs (no rerun). */
-constexpr double kScoringVersion = 6;
+constexpr double kScoringVersion = 7;
 
 /** Median error over the minute before \a t (the run's error level). */
 double errorBefore(const AteStats& ate, double t)
@@ -82,6 +82,16 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	m["smoothed_ate_aligned_rmse"] = computeAte(smoothed, truth, aligned).rmse;
 	const RpeStats rpe = computeRpe(estimate, truth);
 	m["rpe_1s_rmse"] = rpe.translation.rmse;
+	m["rpe_1s_max"] = rpe.translation.max;
+	// The continuous pose for a controller (runs of vslam since it writes one).
+	if (fs::exists(out + "/smoothed_path.tum"))
+	{
+		const Trajectory continuous = readTrajectory(out + "/smoothed_path.tum");
+		const RpeStats r = computeRpe(continuous, truth);
+		m["smoothed_path_rpe_1s_rmse"] = r.translation.rmse;
+		m["smoothed_path_rpe_1s_max"] = r.translation.max;
+		m["smoothed_path_ate_mean"] = computeAte(continuous, truth, raw).mean;
+	}
 	m["rpe_1s_rot_rmse_deg"] = rpe.rotation.rmse * 180 / M_PI;
 	const AteStats odo = computeAte(odometry, truth, raw);
 	m["odometry_ate_rmse"] = odo.rmse;

@@ -108,6 +108,7 @@ void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 	headingChange.loadFromConfigFile(c, kHeadingChange);
 	prefilter.loadFromConfigFile(c, kPreFilter);
 	loopClosure.loadFromConfigFile(c, kLoopClosure);
+	smoothedPose.loadFromConfigFile(c, kSmoothedPose);
 }
 
 void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
@@ -123,6 +124,7 @@ void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
 	headingChange.saveToConfigFile(c, kHeadingChange);
 	prefilter.saveToConfigFile(c, kPreFilter);
 	loopClosure.saveToConfigFile(c, kLoopClosure);
+	smoothedPose.saveToConfigFile(c, kSmoothedPose);
 }
 
 void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
@@ -138,4 +140,5 @@ void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
 	k.addFromOptions(headingChange, kHeadingChange);
 	k.addFromOptions(prefilter, kPreFilter);
 	k.addFromOptions(loopClosure, kLoopClosure);
+	k.addFromOptions(smoothedPose, kSmoothedPose);
 }

@@ -20,6 +20,7 @@
 #include <libvslam/filter/CMeasurementExtractor.h>
 #include <libvslam/filter/CMixtureProposal.h>
 #include <libvslam/filter/CPreFilter.h>
+#include <libvslam/filter/CSmoothedPose.h>
 #include <libvslam/graph/CLandmarkPoseGraph.h>
 #include <libvslam/models/CMotionModel.h>
 #include <libvslam/models/CRobustLikelihood.h>
@@ -109,6 +110,7 @@ struct TVSlamFilterOptions
 	static constexpr const char* kHeadingChange = "vslam_heading_change";
 	static constexpr const char* kPreFilter = "vslam_prefilter";
 	static constexpr const char* kLoopClosure = CLandmarkPoseGraph::TOptions::kSection;
+	static constexpr const char* kSmoothedPose = CSmoothedPose::TOptions::kSection;
 
 	TParticleFilterOptions pf;
 	CMotionModel::TOptions motion;
@@ -121,6 +123,7 @@ struct TVSlamFilterOptions
 	CMeasurementExtractor::THeadingChangeOptions headingChange;
 	CPreFilter::TOptions prefilter;
 	CLandmarkPoseGraph::TOptions loopClosure;
+	CSmoothedPose::TOptions smoothedPose;
 
 	/** Reads every section (absent keys keep their defaults). */
 	void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
