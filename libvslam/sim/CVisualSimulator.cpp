@@ -98,9 +98,8 @@ class CameraFrames
 			pitch += 1.0 * m_rng.drawGaussian1D_normalized();
 			f.bumpBlur = m_rng.drawUniform(3, 10) * m_o.camera.fy() / 250;
 		}
-		// Pitch and roll about the camera's own axes (x right, z ahead).
-		const mrpt::poses::CPose3D shake(0, 0, 0, 0, roll * kDeg, pitch * kDeg);
-		cv::Mat img = m_renderer.render(world.scene(), mrpt::poses::CPose3D(mrpt::poses::CPose2D(robot)) + m_mount + shake);
+		cv::Mat img = m_renderer.render(world.scene(),
+			mrpt::poses::CPose3D(mrpt::poses::CPose2D(robot)) + m_mount + cameraShake(pitch * kDeg, roll * kDeg));
 		m_imaging.capture(img, f);
 		if (m_o.camera_grayscale) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
 		const bool jpg = m_o.image_format == "jpg";
@@ -171,6 +170,13 @@ CVisualSimulator::CVisualSimulator(const TVisualSimOptions& options, const world
 				" walks through the obstacle on line " + std::to_string(s->line) + " of world file '" +
 				m_plan.sourceFile + "'");
 	}
+}
+
+mrpt::poses::CPose3D cameraShake(double pitchRad, double rollRad)
+{
+	// CPose3D turns by yaw about z, pitch about y, roll about x: the
+	// camera's roll is its yaw and the camera's pitch its roll.
+	return mrpt::poses::CPose3D(0, 0, 0, rollRad, 0, pitchRad);
 }
 
 VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::function<void(double)>& progress) const

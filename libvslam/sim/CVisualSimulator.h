@@ -53,6 +53,12 @@ class CVisualSimulator
 	world::FreeSpace m_free;  //!< where the robot can be, from its start
 };
 
+/** The floor's shake of a camera (camera axes: x right, y down, z ahead),
+ * composed after its mount: a pitch about x and a roll about z, never a
+ * turn about y (the camera is fixed to the robot, whose heading the
+ * truth holds). */
+mrpt::poses::CPose3D cameraShake(double pitchRad, double rollRad);
+
 /** Floor plan, free space, true path (green), odometry path (red), kidnaps
  * (blue lines) as a PNG, 60 pixels per metre. */
 void writeSimulationPreview(const world::FloorPlan& plan, const VisualSimRun& run, const std::string& pngFile);

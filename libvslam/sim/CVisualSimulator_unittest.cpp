@@ -224,3 +224,25 @@ TEST(CVisualSimulator, PathsThroughWallsAreErrorsNamingTheWorldFileLine)
 	o.people = {1, 1.0, 2.0, 6.0, 2.0, 1.0};  // walks through the coffee table
 	EXPECT_THROW(CVisualSimulator(o, plan), InputError);
 }
+
+TEST(CVisualSimulator, TheFloorShakesTheCameraInPitchAndRollNeverInHeading)
+{
+	TVisualSimOptions o;
+	o.camera_mount = {0.1, 0, 0.85, 0, -5, 0};
+	const mrpt::poses::CPose3D mount = o.cameraPoseOnRobot();
+	// The optical axis (camera z) and the image's right (camera x) in robot coordinates.
+	const auto axis = [](const mrpt::poses::CPose3D& camera, int column) {
+		const auto R = camera.getRotationMatrix().asEigen();
+		return Eigen::Vector3d(R.col(column));
+	};
+	const auto azimuth = [](const Eigen::Vector3d& v) { return std::atan2(v.y(), v.x()); };
+	const double deg = M_PI / 180;
+	// A pitch turns the optical axis up or down, not left or right.
+	const mrpt::poses::CPose3D pitched = mount + cameraShake(2 * deg, 0);
+	EXPECT_NEAR(azimuth(axis(pitched, 2)), azimuth(axis(mount, 2)), 1e-12);
+	EXPECT_NEAR(std::abs(std::asin(axis(pitched, 2).z()) - std::asin(axis(mount, 2).z())), 2 * deg, 1e-9);
+	// A roll turns the image about the optical axis, which stays.
+	const mrpt::poses::CPose3D rolled = mount + cameraShake(0, 2 * deg);
+	EXPECT_NEAR((axis(rolled, 2) - axis(mount, 2)).norm(), 0, 1e-12);
+	EXPECT_NEAR(std::acos(axis(rolled, 0).dot(axis(mount, 0))), 2 * deg, 1e-9);
+}
