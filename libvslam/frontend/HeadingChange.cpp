@@ -3,6 +3,8 @@
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/models/SE2.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -82,6 +84,81 @@ Eigen::Vector2d normalizedDerivative(const Eigen::Vector3d& p, const Eigen::Vect
 {
 	return {(dp.x() * p.z() - p.x() * dp.z()) / (p.z() * p.z()), (dp.y() * p.z() - p.y() * dp.z()) / (p.z() * p.z())};
 }
+/** The prior std of the wobble angles (rad): a floor shakes a robot's
+ * camera by a fraction of a degree between frames, a bump by a degree or
+ * two; the prior only keeps a fit with too few matches from trading the
+ * heading for a wobble. */
+constexpr double kWobblePriorStd = 1.0 * M_PI / 180;
+
+/** Gauss-Newton for theta on the arc (alpha = theta/2) and the camera's
+ * wobble between the images (two small rotations perpendicular to the
+ * robot's vertical), over the matches within tau of the model, chosen
+ * again after each step. */
+struct ArcFit
+{
+	double theta = 0;
+	std::vector<char> inlier;
+	Eigen::Matrix3d H;  //!< normal matrix of (theta, wobble 0, wobble 1), with the wobble prior
+	Eigen::Vector3d gAlpha;  //!< sum of J dr/dalpha: the fit's sensitivity to the chord direction
+	double sumRR = 0;
+	int n = 0;
+};
+
+std::optional<ArcFit> fitOnArc(const PlanarEpipolarModel& model, const std::vector<Eigen::Vector3d>& rays1,
+	const std::vector<Eigen::Vector3d>& rays2, double theta, double tau, size_t least)
+{
+	ArcFit f;
+	f.theta = theta;
+	f.inlier.assign(rays1.size(), 0);
+	Eigen::Matrix3d wobble = Eigen::Matrix3d::Identity();
+	Eigen::Vector2d wobbleAngles = Eigen::Vector2d::Zero();
+	// The prior's information relative to a match's, whose residual std is
+	// taken as half the inlier bound.
+	const double priorWeight = (tau / 2) * (tau / 2) / (kWobblePriorStd * kWobblePriorStd);
+	std::vector<char> previous;
+	for (int iteration = 0; iteration < 30; iteration++)
+	{
+		// The search above held the camera level: a shake of a degree moves
+		// the points by several pixels, so the first steps take matches from
+		// farther off the model, and the bound narrows as the wobble is found.
+		const double bound = tau * (iteration < 3 ? 4 : iteration < 6 ? 2 : 1);
+		f.H = Eigen::Matrix3d::Zero();
+		f.gAlpha.setZero();
+		Eigen::Vector3d g = Eigen::Vector3d::Zero();
+		f.sumRR = 0;
+		f.n = 0;
+		const EpipolarMotion m = model.motion(f.theta, f.theta / 2, wobble);
+		for (size_t i = 0; i < rays1.size(); i++)
+		{
+			double dTheta = 0, dAlpha = 0, dWobble[2] = {0, 0};
+			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i], &dTheta, &dAlpha, dWobble);
+			f.inlier[i] = std::abs(r) <= bound;
+			if (!f.inlier[i]) continue;
+			const Eigen::Vector3d J(dTheta + dAlpha / 2, dWobble[0], dWobble[1]);  // theta along the arc
+			f.H += J * J.transpose();
+			g += J * r;
+			f.gAlpha += J * dAlpha;
+			f.sumRR += r * r;
+			f.n++;
+		}
+		if (f.n < static_cast<int>(least)) return std::nullopt;
+		f.H(1, 1) += priorWeight;
+		f.H(2, 2) += priorWeight;
+		g.tail<2>() += priorWeight * wobbleAngles;
+		const Eigen::Vector3d step = -f.H.ldlt().solve(g);
+		if (!step.allFinite()) return std::nullopt;
+		const bool settled = f.inlier == previous && bound == tau;
+		previous = f.inlier;
+		if (settled && step.norm() < 1e-10) break;
+		f.theta += step[0];
+		wobbleAngles += step.tail<2>();
+		const Eigen::Vector3d w = model.wobbleAxes().leftCols<2>() * step.tail<2>();
+		wobble = wobble * Eigen::AngleAxisd(w.norm(), w.norm() > 0 ? Eigen::Vector3d(w.normalized()) : Eigen::Vector3d::UnitX())
+							  .toRotationMatrix();
+	}
+	if (!(f.H.determinant() > 0)) return std::nullopt;
+	return f;
+}
 }  // namespace
 
 HeadingChangeSettings vslam::headingChangeSettings(const TVisualFrontEndOptions& o)
@@ -99,6 +176,14 @@ HeadingChangeSettings vslam::headingChangeSettings(const TVisualFrontEndOptions&
 PlanarEpipolarModel::PlanarEpipolarModel(const mrpt::poses::CPose3D& mount, double chord)
 	: m_Rm(mount.getRotationMatrix().asEigen()), m_tm(mount.x(), mount.y(), mount.z()), m_chord(chord)
 {
+	const Eigen::Vector3d vertical = m_Rm.transpose() * Eigen::Vector3d::UnitZ();
+	// Any axis not along the vertical gives the first perpendicular one.
+	const Eigen::Vector3d helper =
+		std::abs(vertical.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+	const Eigen::Vector3d a = vertical.cross(helper).normalized();
+	m_wobbleAxes.col(0) = a;
+	m_wobbleAxes.col(1) = vertical.cross(a);
+	m_wobbleAxes.col(2) = vertical;
 }
 
 double PlanarEpipolarModel::chordDirectionStd(double theta)
@@ -127,11 +212,15 @@ void PlanarEpipolarModel::cameraMotion(double theta, double alpha, Eigen::Matrix
 		*dt_dalpha = m_Rm.transpose() * Eigen::Vector3d(-m_chord * std::sin(alpha), m_chord * std::cos(alpha), 0);
 }
 
-EpipolarMotion PlanarEpipolarModel::motion(double theta, double alpha) const
+EpipolarMotion PlanarEpipolarModel::motion(double theta, double alpha, const Eigen::Matrix3d& wobble) const
 {
 	EpipolarMotion m;
 	Eigen::Vector3d t, dt, dta;
 	cameraMotion(theta, alpha, m.R, t, &m.dR_dtheta, &dt, &dta);
+	// The wobble turns the second camera about its own centre: t stays.
+	m.R = m.R * wobble;
+	m.dR_dtheta = m.dR_dtheta * wobble;
+	for (int k = 0; k < 2; k++) m.dR_dwobble[k] = m.R * skew(m_wobbleAxes.col(k));
 	m.still = t.norm() < kStillCamera && dt.norm() < kStillCamera && dta.norm() < kStillCamera;
 	if (m.still)
 	{
@@ -150,12 +239,13 @@ EpipolarMotion PlanarEpipolarModel::motion(double theta, double alpha) const
 	m.E = skew(t) * m.R;
 	m.dE_dtheta = skew(dt) * m.R + skew(t) * m.dR_dtheta;
 	m.dE_dalpha = skew(dta) * m.R;
+	for (int k = 0; k < 2; k++) m.dE_dwobble[k] = skew(t) * m.dR_dwobble[k];
 	m.translation = t.norm();
 	return m;
 }
 
-double PlanarEpipolarModel::residual(
-	const EpipolarMotion& m, const Eigen::Vector3d& r1, const Eigen::Vector3d& r2, double* dTheta, double* dAlpha)
+double PlanarEpipolarModel::residual(const EpipolarMotion& m, const Eigen::Vector3d& r1, const Eigen::Vector3d& r2,
+	double* dTheta, double* dAlpha, double* dWobble)
 {
 	if (m.still)
 	{
@@ -166,6 +256,8 @@ double PlanarEpipolarModel::residual(
 		const Eigen::Vector3d p = m.R * r2;
 		if (dTheta) *dTheta = -normalizedDerivative(p, m.dR_dtheta * r2).dot(across);
 		if (dAlpha) *dAlpha = 0;
+		if (dWobble)
+			for (int k = 0; k < 2; k++) dWobble[k] = -normalizedDerivative(p, m.dR_dwobble[k] * r2).dot(across);
 		return (normalized(r1) - normalized(p)).dot(across);
 	}
 	// x1^T E x2 = 0; Sampson's first-order distance to the epipolar lines in
@@ -177,6 +269,7 @@ double PlanarEpipolarModel::residual(
 	{
 		if (dTheta) *dTheta = 0;
 		if (dAlpha) *dAlpha = 0;
+		if (dWobble) dWobble[0] = dWobble[1] = 0;
 		return 0;
 	}
 	const double sqrtB = std::sqrt(b);
@@ -188,6 +281,8 @@ double PlanarEpipolarModel::residual(
 	};
 	if (dTheta) *dTheta = derivative(m.dE_dtheta);
 	if (dAlpha) *dAlpha = derivative(m.dE_dalpha);
+	if (dWobble)
+		for (int k = 0; k < 2; k++) dWobble[k] = derivative(m.dE_dwobble[k]);
 	return a / sqrtB;
 }
 
@@ -260,37 +355,10 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 	}
 	theta = bestTheta;
 
-	// Gauss-Newton for theta on the arc (alpha = theta/2), over the inliers,
-	// chosen again after each step.
-	std::vector<char> inlier(rays1.size(), 0), previous;
-	double sumJJ = 0, sumJJa = 0, sumRR = 0;
-	int n = 0;
-	for (int iteration = 0; iteration < 30; iteration++)
-	{
-		double sumRJ = 0;
-		sumJJ = sumJJa = sumRR = 0;
-		n = 0;
-		const EpipolarMotion m = model.motion(theta, theta / 2);
-		for (size_t i = 0; i < rays1.size(); i++)
-		{
-			double dTheta = 0, dAlpha = 0;
-			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i], &dTheta, &dAlpha);
-			inlier[i] = std::abs(r) <= tau;
-			if (!inlier[i]) continue;
-			const double J = dTheta + dAlpha / 2;  // along the arc
-			sumRJ += r * J;
-			sumJJ += J * J;
-			sumJJa += J * dAlpha;
-			sumRR += r * r;
-			n++;
-		}
-		if (n < static_cast<int>(least) || !(sumJJ > 0)) return std::nullopt;
-		const double step = -sumRJ / sumJJ;
-		const bool settled = inlier == previous;
-		previous = inlier;
-		if (settled && std::abs(step) < 1e-10) break;
-		theta += step;
-	}
+	const auto fit = fitOnArc(model, rays1, rays2, theta, tau, least);
+	if (!fit) return std::nullopt;
+	theta = fit->theta;
+	const std::vector<char>& inlier = fit->inlier;
 	if (!(std::abs(theta) <= s.maxTurn)) return std::nullopt;
 	// Each inlier's bearing change can differ from the heading change only by
 	// parallax, at most the camera's translation over the nearest depth a
@@ -308,18 +376,19 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 	// odometry missed; the arc fit turned theta to explain it.
 	if (s.maxChordZ > 0 && chordDirectionZ(model, rays1, rays2, inlier, theta) > s.maxChordZ) return std::nullopt;
 	// The fit's own variance, plus the chord direction's: a chord off the
-	// arc by delta moves the fitted theta by -sum(J dr/dalpha) / sum(J^2)
-	// delta, with delta's prior spread (a "consider" parameter: the images
-	// measure the direction of a few centimetres of travel too poorly to
-	// trust their own estimate of it).
-	const double variance = sumRR / (n - 1);  // normalized image units^2
-	const double sensitivity = sumJJa / sumJJ;
+	// arc by delta moves the fitted parameters by -H^-1 g_alpha delta, with
+	// delta's prior spread (a "consider" parameter: the images measure the
+	// direction of a few centimetres of travel too poorly to trust their
+	// own estimate of it).
+	const Eigen::Matrix3d Hinv = fit->H.inverse();
+	const double variance = fit->sumRR / std::max(1, fit->n - 3);  // normalized image units^2
+	const double sensitivity = (Hinv * fit->gAlpha)[0];
 	const double sigmaAlpha = PlanarEpipolarModel::chordDirectionStd(theta);
 	HeadingChangeEstimate e;
 	e.dphi = se2::wrap(theta);
-	e.inliers = n;
+	e.inliers = fit->n;
 	e.matches = static_cast<int>(matches.size());
-	e.rmsPx = std::sqrt(sumRR / n) * focal;
-	e.stdDphi = std::sqrt(variance / sumJJ + sensitivity * sensitivity * sigmaAlpha * sigmaAlpha);
+	e.rmsPx = std::sqrt(fit->sumRR / fit->n) * focal;
+	e.stdDphi = std::sqrt(variance * Hinv(0, 0) + sensitivity * sensitivity * sigmaAlpha * sigmaAlpha);
 	return e;
 }

@@ -86,12 +86,14 @@ struct HeadingChangeEstimate
  * built once to score many matches (PlanarEpipolarModel::motion). */
 struct EpipolarMotion
 {
-	/** The essential matrix E = [t]x R (X1 = R X2 + t) and its derivatives. */
-	Eigen::Matrix3d E, dE_dtheta, dE_dalpha;
+	/** The essential matrix E = [t]x R (X1 = R X2 + t) and its derivatives,
+	 * by theta, alpha and the two wobble angles (right perturbations of R
+	 * about PlanarEpipolarModel::wobbleAxes()). */
+	Eigen::Matrix3d E, dE_dtheta, dE_dalpha, dE_dwobble[2];
 	/** A camera that does not move (on the robot's axis, turning in place):
-	 * the rotation, its derivative, and those at theta = 0. */
+	 * the rotation, its derivatives, and those at theta = 0. */
 	bool still = false;
-	Eigen::Matrix3d R, dR_dtheta, R0, dR0_dtheta;
+	Eigen::Matrix3d R, dR_dtheta, dR_dwobble[2], R0, dR0_dtheta;
 	double translation = 0;  //!< of the camera, m (0: still)
 };
 
@@ -113,8 +115,16 @@ class PlanarEpipolarModel
 		Eigen::Matrix3d* dR_dtheta = nullptr, Eigen::Vector3d* dt_dtheta = nullptr,
 		Eigen::Vector3d* dt_dalpha = nullptr) const;
 
-	/** The camera's motion for (theta, alpha). */
-	EpipolarMotion motion(double theta, double alpha) const;
+	/** The camera's motion for (theta, alpha), its rotation followed by
+	 * `wobble` (X1 = R wobble X2 + t): the camera's pitch and roll change
+	 * between the two images as the floor shakes it, which a planar robot
+	 * motion does not hold. */
+	EpipolarMotion motion(double theta, double alpha, const Eigen::Matrix3d& wobble = Eigen::Matrix3d::Identity()) const;
+
+	/** Two unit axes, in the second camera's frame, perpendicular to the
+	 * robot's vertical and to each other: the directions a wobble can
+	 * turn the camera without looking like a heading change. */
+	const Eigen::Matrix3d& wobbleAxes() const { return m_wobbleAxes; }
 
 	/** Signed Sampson distance of rays r1 (first image) and r2 (second)
 	 * under `m`, in normalized image units (times the focal length:
@@ -122,7 +132,7 @@ class PlanarEpipolarModel
 	 * not move, the distance of r1 from R r2 across the direction in which
 	 * the rotation moves the point. */
 	static double residual(const EpipolarMotion& m, const Eigen::Vector3d& r1, const Eigen::Vector3d& r2,
-		double* dTheta = nullptr, double* dAlpha = nullptr);
+		double* dTheta = nullptr, double* dAlpha = nullptr, double* dWobble = nullptr);
 	/** The same for (theta, alpha). */
 	double residual(const Eigen::Vector3d& r1, const Eigen::Vector3d& r2, double theta, double alpha,
 		double* dTheta = nullptr, double* dAlpha = nullptr) const
@@ -137,6 +147,7 @@ class PlanarEpipolarModel
 	Eigen::Matrix3d m_Rm;  //!< mount rotation (camera to robot)
 	Eigen::Vector3d m_tm;  //!< camera centre on the robot
 	double m_chord;
+	Eigen::Matrix3d m_wobbleAxes;  //!< columns 0 and 1 (2: the robot's vertical)
 };
 
 /** The heading change from `first` to `second`, or nullopt when too few
