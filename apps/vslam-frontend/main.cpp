@@ -404,7 +404,7 @@ int main(int argc, const char** argv)
 		for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
 		std::cout << "\n";
 		std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
-				  << " poorly conditioned (recognition_max_std_*), " << frontEnd.ambiguousRecognitions()
+				  << " degenerate, " << frontEnd.ambiguousRecognitions()
 				  << " ambiguous (recognition_ambiguity_min_gap), " << frontEnd.narrowRecognitions()
 				  << " narrow (recognition_min_spread_deg), " << frontEnd.inconsistentRecognitions()
 				  << " inconsistent with the odometry (recognition_odometry_gate_s)\n";

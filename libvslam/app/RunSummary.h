@@ -39,9 +39,8 @@ struct RunSummary
 		double bytesPerLandmark = 0, indexBytes = 0;
 		size_t creationAttempts = 0;
 		std::map<std::string, size_t> creationRejections;  //!< by reason
-		/** Recognitions not reported: predicted too uncertain (or degenerate),
-		 * ambiguous, narrow, and inconsistent with the odometry
-		 * (recognition_max_std_*, recognition_ambiguity_min_gap,
+		/** Recognitions not reported: degenerate, ambiguous, narrow, and
+		 * inconsistent with the odometry (recognition_ambiguity_min_gap,
 		 * recognition_min_spread_deg, recognition_odometry_gate_s). */
 		size_t poorlyConditioned = 0, ambiguous = 0, narrow = 0, inconsistent = 0;
 	};

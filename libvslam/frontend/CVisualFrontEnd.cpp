@@ -103,11 +103,9 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		lm->lastSeen = view.time;
 		recognized.push_back(c.id);
 		mostInliers = std::max(mostInliers, m->NPoints);
-		// Recognized (no new landmark here), but measured too poorly to report
-		// (a degenerate solve measures nothing).
-		if (!m->covariance.allFinite() ||
-			(m_options.recognition_max_std_xy > 0 && m->stdPosition > m_options.recognition_max_std_xy) ||
-			(m_options.recognition_max_std_phi > 0 && m->stdHeading > m_options.recognition_max_std_phi))
+		// Recognized (no new landmark here), but a degenerate solve measures
+		// nothing.
+		if (!m->covariance.allFinite())
 		{
 			m_poorlyConditioned++;
 			continue;

@@ -64,8 +64,7 @@ class CVisualFrontEnd
 	/** Totals over all images so far. */
 	const StageSeconds& totalSeconds() const { return m_total; }
 	size_t imagesProcessed() const { return m_images; }
-	/** Recognitions dropped for their predicted uncertainty
-	 * (recognition_max_std_xy / _phi, or a degenerate solve). */
+	/** Recognitions dropped for a degenerate pose solve (no uncertainty). */
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
 	/** Recognitions dropped for recognition_ambiguity_min_gap. */
 	size_t ambiguousRecognitions() const { return m_ambiguous; }

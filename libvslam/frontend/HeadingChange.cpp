@@ -33,50 +33,6 @@ constexpr double kSearchStep = 0.05 * M_PI / 180;
 /** Slip allowed in the chord's direction beyond the two headings, rad. */
 constexpr double kChordSlip = 1.0 * M_PI / 180;
 
-/** The free fit's std of the chord direction is this factor times its
- * least-squares std: a fit of both parameters trusted its alpha about 2.5
- * times too much on the rendered sequences (results.md 9.28). */
-constexpr double kChordFitStdFactor = 2.5;
-
-/** How many stds the chord direction the matches give lies off the arc
- * (alpha = theta/2): a Gauss-Newton fit of theta and alpha on the arc
- * fit's inliers, from the arc fit. 0 where the matches do not fix alpha
- * (a camera that does not move, a singular fit). */
-double chordDirectionZ(const PlanarEpipolarModel& model, const std::vector<Eigen::Vector3d>& rays1,
-	const std::vector<Eigen::Vector3d>& rays2, const std::vector<char>& inlier, double theta)
-{
-	Eigen::Vector2d x(theta, theta / 2);
-	Eigen::Matrix2d H;
-	double sumRR = 0;
-	int n = 0;
-	for (int iteration = 0; iteration < 10; iteration++)
-	{
-		H.setZero();
-		Eigen::Vector2d g = Eigen::Vector2d::Zero();
-		sumRR = 0;
-		n = 0;
-		const EpipolarMotion m = model.motion(x[0], x[1]);
-		if (m.still) return 0;
-		for (size_t i = 0; i < rays1.size(); i++)
-		{
-			if (!inlier[i]) continue;
-			Eigen::Vector2d J;
-			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i], &J[0], &J[1]);
-			H += J * J.transpose();
-			g += J * r;
-			sumRR += r * r;
-			n++;
-		}
-		if (n < 3 || !(H.determinant() > 0)) return 0;
-		const Eigen::Vector2d step = -H.inverse() * g;
-		x += step;
-		if (step.norm() < 1e-9) break;
-	}
-	const double varAlpha = sumRR / (n - 2) * H.inverse()(1, 1) * kChordFitStdFactor * kChordFitStdFactor;
-	const double prior = PlanarEpipolarModel::chordDirectionStd(x[0]);
-	return std::abs(se2::wrap(x[1] - x[0] / 2)) / std::sqrt(varAlpha + prior * prior);
-}
-
 /** Normalized image point of a camera-frame direction, and its derivative
  * for a derivative dp of the direction. */
 Eigen::Vector2d normalized(const Eigen::Vector3d& p) { return {p.x() / p.z(), p.y() / p.z()}; }
@@ -169,7 +125,6 @@ HeadingChangeSettings vslam::headingChangeSettings(const TVisualFrontEndOptions&
 	s.inlierPx = o.heading_change_inlier_px;
 	s.maxTurn = o.heading_change_max_turn;
 	s.minDepth = o.heading_change_min_depth;
-	s.maxChordZ = o.heading_change_max_chord_z;
 	return s;
 }
 
@@ -372,9 +327,6 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 		if (inlier[i]) offsets.push_back(std::abs(se2::wrap(votes[i] - theta)));
 	std::nth_element(offsets.begin(), offsets.begin() + static_cast<long>(offsets.size() / 2), offsets.end());
 	if (offsets[offsets.size() / 2] > std::atan(t.norm() / s.minDepth) + kVoteBin) return std::nullopt;
-	// A chord the matches put well off the arc is a sideways slip the
-	// odometry missed; the arc fit turned theta to explain it.
-	if (s.maxChordZ > 0 && chordDirectionZ(model, rays1, rays2, inlier, theta) > s.maxChordZ) return std::nullopt;
 	// The fit's own variance, plus the chord direction's: a chord off the
 	// arc by delta moves the fitted parameters by -H^-1 g_alpha delta, with
 	// delta's prior spread (a "consider" parameter: the images measure the

@@ -61,13 +61,6 @@ struct HeadingChangeSettings
 	/** Nearest depth a scene point may have, m: bounds the parallax by
 	 * which a match's bearing change may differ from the heading change. */
 	double minDepth = 0.2;
-	/** A fit is dropped when the chord direction the images give (a free
-	 * fit of theta and alpha on the same inliers) lies more than this many
-	 * stds from the arc's theta/2 (0: no test). Its std is the free fit's
-	 * times kChordFitStdFactor, root-sum-squared with alpha's prior spread.
-	 * A sideways slip the odometry missed (2 cm over a 6 cm chord) moves
-	 * the arc fit's theta by lateral / depth, at 15-40 predicted stds. */
-	double maxChordZ = 0;
 };
 
 struct TVisualFrontEndOptions;

@@ -4,9 +4,16 @@
 
 using namespace vslam;
 
+namespace
+{
+/** Lowe's edge threshold (the ratio of principal curvatures): OpenCV's default. */
+constexpr double kSiftEdgeThreshold = 10;
+}  // namespace
+
 FeatureExtractor::FeatureExtractor(const TVisualFrontEndOptions& o)
-	: m_sift(cv::SIFT::create(o.sift_features, 3, o.sift_contrast_threshold, o.sift_edge_threshold)),
-	  m_upsample(o.sift_upsample)
+	: m_sift(cv::SIFT::create(o.sift_features, 3, o.sift_contrast_threshold, kSiftEdgeThreshold)),
+	  m_upsample(o.sift_upsample),
+	  m_denoiseSigma(o.sift_denoise_sigma)
 {
 }
 
@@ -57,6 +64,12 @@ ImageFeatures FeatureExtractor::extract(const cv::Mat& image, const ImageCalibra
 	else
 		cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
 	if (grey.depth() != CV_8U) grey.convertTo(grey, CV_8U);
+	if (m_denoiseSigma > 0)
+	{
+		cv::Mat blurred;  // never in place: grey may share the caller's pixels
+		cv::GaussianBlur(grey, blurred, cv::Size(), m_denoiseSigma);
+		grey = blurred;
+	}
 
 	ImageFeatures f;
 	f.camera = calib.camera;

@@ -42,5 +42,6 @@ class FeatureExtractor
 
 	cv::Ptr<cv::SIFT> m_sift;
 	bool m_upsample;
+	double m_denoiseSigma;
 };
 }  // namespace vslam

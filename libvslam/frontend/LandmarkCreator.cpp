@@ -358,7 +358,7 @@ CreationResult vslam::createLandmark(
 	// Keep well-conditioned points only.
 	const auto err = maxErrorOfPoint(problem);
 	// Each point's depth std, only where an option uses it.
-	const bool depthStdUsed = o.creation_max_depth_std > 0 || o.keepsDepthStd();
+	const bool depthStdUsed = o.keepsDepthStd();
 	const std::vector<float> depthStd = depthStdUsed
 		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px))
 		: std::vector<float>();
@@ -374,8 +374,7 @@ CreationResult vslam::createLandmark(
 		for (size_t a = 0; a < centres.size(); a++)
 			for (size_t b = a + 1; b < centres.size(); b++)
 				parallax = std::max(parallax, angleBetween(X - centres[a], X - centres[b]));
-		const bool depthKnown = o.creation_max_depth_std <= 0 || depthStd[i] <= o.creation_max_depth_std;
-		if (parallax >= minParallax && depthKnown) good.push_back(static_cast<int>(i));
+		if (parallax >= minParallax) good.push_back(static_cast<int>(i));
 	}
 	std::stable_sort(good.begin(), good.end(), [&](int a, int b) { return err[a] < err[b]; });
 	if (static_cast<int>(good.size()) > o.creation_max_points) good.resize(o.creation_max_points);

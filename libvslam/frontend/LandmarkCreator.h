@@ -7,8 +7,8 @@
  * between the first and last view, points are triangulated, then bundle
  * adjustment refines points and poses with odometry as priors on the poses,
  * the scale is reset to the odometry baseline, and points that reproject
- * badly, lie behind a camera, are seen under too small an angle, too far
- * away or (creation_max_depth_std) with too uncertain a depth are dropped. All views are assumed to come from the same camera
+ * badly, lie behind a camera, are seen under too small an angle or too far
+ * away are dropped. All views are assumed to come from the same camera
  * (the newest view's intrinsics are used).
  */
 #include <libvslam/frontend/ImageFeatures.h>

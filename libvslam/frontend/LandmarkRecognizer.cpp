@@ -2,7 +2,6 @@
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/InlierSpread.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
-#include <libvslam/frontend/PlanarPose.h>
 #include <libvslam/frontend/PoseAmbiguity.h>
 #include <libvslam/frontend/ProjectionMatching.h>
 #include <libvslam/frontend/RansacIterations.h>
@@ -49,19 +48,6 @@ VisualMeasurement measurementFromPnP(const cv::Mat& rvec, const cv::Mat& tvec, c
 	return m;
 }
 
-/** The fewest PnP inliers among `matches` descriptor matches that
- * recognition_min_inliers and recognition_min_inlier_ratio accept. */
-int leastAcceptedInliers(int matches, const TVisualFrontEndOptions& o)
-{
-	return std::max(o.recognition_min_inliers,
-		static_cast<int>(std::ceil(o.recognition_min_inlier_ratio * static_cast<double>(matches))));
-}
-
-bool enoughInliers(int inliers, int matches, const TVisualFrontEndOptions& o)
-{
-	return inliers >= leastAcceptedInliers(matches, o);
-}
-
 /** Sets the predicted covariance of `m`'s (dx, dy, dtheta), and the
  * position and heading std from it. */
 void setPredictedCovariance(VisualMeasurement& m, const Eigen::Matrix3d& cov)
@@ -84,69 +70,30 @@ double slopeStd(const Eigen::Vector2d& tilt, const Eigen::Matrix2d& cov)
 	return std::sqrt(std::max(0.0, u.dot(cov * u)));
 }
 
-/** The planar refinement of a 6-DOF measurement `m` (recognition_planar):
- * its pose, inliers, RMS error and predicted uncertainty replace the
- * 6-DOF ones; Slope stays the 6-DOF solve's. Empty if too few inliers. */
-std::optional<VisualMeasurement> planarMeasurement(VisualMeasurement m, const std::vector<int>& inliers,
-	const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Matx33d& K,
-	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& o)
-{
-	// From the 6-DOF solve, its height above the mount's included.
-	const PlanarCameraState initial{
-		{m.robotInLandmark.x(), m.robotInLandmark.y(), m.robotInLandmark.yaw()}, m.robotInLandmark.z()};
-	const PlanarPoseFit fit = refinePlanarPose(initial, inliers, object, pixels, mount, K, o.recognition_ransac_px);
-	const int n = static_cast<int>(fit.inliers.size());
-	if (!enoughInliers(n, m.matches, o)) return std::nullopt;
-	const se2::Pose& r = fit.state.robot;
-	m.robotInLandmark = mrpt::poses::CPose3D(r.x, r.y, fit.state.height, r.phi, 0, 0);
-	m.landmarkInRobot = mrpt::poses::CPose2D() - mrpt::poses::CPose2D(r.x, r.y, r.phi);
-	m.NPoints = n;
-	m.ProjErrRMS = fit.rmsPx;
-	// The measurement is the inverse of r: carry the covariance through its
-	// Jacobian.
-	const double c = std::cos(r.phi), s = std::sin(r.phi);
-	Eigen::Matrix3d F;
-	F << -c, -s, s * r.x - c * r.y, s, -c, c * r.x + s * r.y, 0, 0, -1;
-	setPredictedCovariance(m, F * fit.covariance * F.transpose());
-	return m;
-}
-
 constexpr double kRansacConfidence = 0.999;
 /** A consensus threshold that counts every match. */
 constexpr double kNoThreshold = std::numeric_limits<double>::infinity();
-/** AP3P draws 4 points; USAC's P3P draws 3, so 4 errs on the long side. */
+/** AP3P draws 4 points. */
 constexpr int kRansacSampleSize = 4;
 
-/** RANSAC draws for `matches` 2-D/3-D matches: recognition_ransac_iterations,
- * or fewer with recognition_ransac_early_stop. */
+/** RANSAC draws for `matches` 2-D/3-D matches: recognition_ransac_iterations
+ * at most, and no more than a pose with recognition_min_inliers would take
+ * to be drawn with kRansacConfidence (RansacIterations.h): a candidate
+ * without one then costs a fraction of the budget. */
 int ransacDraws(int matches, const TVisualFrontEndOptions& o)
 {
-	if (!o.recognition_ransac_early_stop || matches < kRansacSampleSize) return o.recognition_ransac_iterations;
+	if (matches < kRansacSampleSize) return o.recognition_ransac_iterations;
 	return std::min(o.recognition_ransac_iterations,
-		ransacIterationsToFind(leastAcceptedInliers(matches, o), matches, kRansacSampleSize, kRansacConfidence));
+		ransacIterationsToFind(o.recognition_min_inliers, matches, kRansacSampleSize, kRansacConfidence));
 }
 
-/** RANSAC PnP by recognition_ransac; true if a pose was found. */
+/** RANSAC PnP (OpenCV's solvePnPRansac, AP3P minimal sets); true if a pose was found. */
 bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Mat& K,
 	const TVisualFrontEndOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)
 {
 	const int iterations = ransacDraws(static_cast<int>(object.size()), o);
-	if (o.recognition_ransac == "classic")
-		return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, iterations,
-			static_cast<float>(o.recognition_ransac_px), kRansacConfidence, inliers, cv::SOLVEPNP_AP3P);
-	if (o.recognition_ransac != "usac")
-		throw std::invalid_argument("unknown recognition_ransac '" + o.recognition_ransac + "' (classic | usac)");
-	cv::UsacParams p;
-	p.confidence = kRansacConfidence;
-	p.isParallel = false;
-	p.maxIterations = iterations;
-	p.threshold = o.recognition_ransac_px;
-	p.sampler = cv::SAMPLING_UNIFORM;
-	p.score = cv::SCORE_METHOD_MSAC;
-	p.loMethod = cv::LOCAL_OPTIM_NULL;
-	p.randomGeneratorState = 0;  // the same pose for the same input, run after run
-	cv::Mat cameraMatrix = K.clone();  // an in-out argument of this overload
-	return cv::solvePnPRansac(object, pixels, cameraMatrix, cv::noArray(), rvec, tvec, inliers, p);
+	return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, iterations,
+		static_cast<float>(o.recognition_ransac_px), kRansacConfidence, inliers, cv::SOLVEPNP_AP3P);
 }
 
 /** The elements of `all` at `rows`, in that order. */
@@ -304,13 +251,13 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const int leastToRefine = o.recognition_local_optimization ? kRansacSampleSize : o.recognition_min_inliers;
 	if (!found || static_cast<int>(inliers.size()) < leastToRefine) return std::nullopt;
 	PoseConsensus fit = refineOnInliers(c.object, c.pixels, K, o, inliers, rvec, tvec);
-	if (!enoughInliers(static_cast<int>(fit.inliers.size()), static_cast<int>(matches.size()), o)) return std::nullopt;
+	if (static_cast<int>(fit.inliers.size()) < o.recognition_min_inliers) return std::nullopt;
 	// Only a recognition already accepted is extended: the search adds
 	// matches to a pose, never a pose to the image.
 	if (o.recognition_guided_radius_px > 0)
 	{
 		fit = extendByProjection(image, query, lm, landmarkDescriptors, K, o, c, fit, rvec, tvec);
-		if (!enoughInliers(static_cast<int>(fit.inliers.size()), static_cast<int>(c.size()), o)) return std::nullopt;
+		if (static_cast<int>(fit.inliers.size()) < o.recognition_min_inliers) return std::nullopt;
 	}
 	const std::vector<cv::Point3f>& object = c.object;
 	const std::vector<cv::Point2f>& pixels = c.pixels;
@@ -329,8 +276,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	// numerical Jacobian. With recognition_structure_weighted, the fit
 	// weighted by each point's depth uncertainty, and its covariance;
 	// otherwise the unweighted fit's (pixel noise sigma: their RMS error, at
-	// least kLeastPixelNoisePx; with recognition_structure_uncertainty also
-	// each point's depth uncertainty).
+	// least kLeastPixelNoisePx).
 	Eigen::Matrix<double, 6, 6> poseCov;
 	bool conditioned = o.recognition_structure_weighted && !inlierDepthStd.empty() &&
 		refinePoseWeightedByStructure(inlierObject, inlierPixels, inlierDepthStd, creationCamera, image.camera.K(),
@@ -350,9 +296,8 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 			m.ambiguityGap = reprojectionCostGap(pose, *other, inlierObject.size());
 	}
 	if (!conditioned)
-		conditioned = poseCovariance(poseSolveResiduals(inlierObject,
-										 o.recognition_structure_uncertainty ? inlierDepthStd : std::vector<float>(),
-										 creationCamera, rvec, tvec, image.camera.K()),
+		conditioned = poseCovariance(
+			poseSolveResiduals(inlierObject, std::vector<float>(), creationCamera, rvec, tvec, image.camera.K()),
 			std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov);
 	Eigen::Matrix<double, 3, 6> F;  // d(dx, dy, dtheta) / d(rvec, tvec)
 	Eigen::Matrix<double, 2, 6> G;  // d tilt / d(rvec, tvec)
@@ -373,7 +318,6 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	}
 	m.stdSlope = conditioned ? slopeStd(m.tilt, G * poseCov * G.transpose())
 							 : std::numeric_limits<double>::infinity();
-	if (o.recognition_planar) return planarMeasurement(m, refinedInliers, object, pixels, image.camera.K(), mount, o);
 	if (!conditioned)
 	{
 		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();

@@ -21,8 +21,8 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	sift_features = readCount("sift_features", sift_features, 0, 100000);
 	sift_contrast_threshold =
 		readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
-	sift_edge_threshold = readDouble(c, s, "sift_edge_threshold", sift_edge_threshold, Range::positive());
 	sift_upsample = readBool(c, s, "sift_upsample", sift_upsample);
+	sift_denoise_sigma = readDouble(c, s, "sift_denoise_sigma", sift_denoise_sigma, Range::closed(0, 5));
 	match_ratio = readDouble(c, s, "match_ratio", match_ratio, {0, 1, false, true});
 	creation_views = readCount("creation_views", creation_views, 3, 10);
 	creation_min_baseline =
@@ -36,8 +36,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		c, s, "creation_max_reprojection_px", creation_max_reprojection_px, Range::positive());
 	creation_min_parallax_deg =
 		readDouble(c, s, "creation_min_parallax_deg", creation_min_parallax_deg, Range::closed(0, 90));
-	creation_max_depth_std =
-		readDouble(c, s, "creation_max_depth_std", creation_max_depth_std, Range::nonNegative());
 	creation_max_depth = readDouble(c, s, "creation_max_depth", creation_max_depth, Range::positive());
 	creation_odometry_sigma_deg =
 		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range::positive());
@@ -56,23 +54,12 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_max_candidates =
 		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);
 	recognition_min_inliers = readCount("recognition_min_inliers", recognition_min_inliers, 6, 100000);
-	recognition_min_inlier_ratio =
-		readDouble(c, s, "recognition_min_inlier_ratio", recognition_min_inlier_ratio, Range::closed(0, 1));
 	recognition_ransac_px =
 		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
-	recognition_ransac_early_stop = readBool(c, s, "recognition_ransac_early_stop", recognition_ransac_early_stop);
 	recognition_local_optimization =
 		readBool(c, s, "recognition_local_optimization", recognition_local_optimization);
-	recognition_ransac = readWord(c, s, "recognition_ransac", recognition_ransac, {"classic", "usac"});
-	recognition_planar = readBool(c, s, "recognition_planar", recognition_planar);
-	recognition_max_std_xy =
-		readDouble(c, s, "recognition_max_std_xy", recognition_max_std_xy, Range::nonNegative());
-	recognition_max_std_phi = readDegreesAsRadians(
-		c, s, "recognition_max_std_phi_deg", recognition_max_std_phi, Range::closed(0, 180));
-	recognition_structure_uncertainty =
-		readBool(c, s, "recognition_structure_uncertainty", recognition_structure_uncertainty);
 	recognition_structure_weighted = readBool(c, s, "recognition_structure_weighted", recognition_structure_weighted);
 	recognition_ambiguity_min_gap =
 		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
@@ -102,8 +89,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		c, s, "heading_change_max_turn_deg", heading_change_max_turn, {0, 90, false, true});
 	heading_change_min_depth =
 		readDouble(c, s, "heading_change_min_depth", heading_change_min_depth, Range::positive());
-	heading_change_max_chord_z =
-		readDouble(c, s, "heading_change_max_chord_z", heading_change_max_chord_z, Range::nonNegative());
 	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
 	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
 	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
@@ -130,7 +115,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 {
 	c.write(s, "sift_features", sift_features, 30, 10, "Strongest SIFT features kept per image (0: all)");
 	c.write(s, "sift_contrast_threshold", sift_contrast_threshold, 30, 10, "SIFT contrast threshold");
-	c.write(s, "sift_edge_threshold", sift_edge_threshold, 30, 10, "SIFT edge threshold");
+	c.write(s, "sift_denoise_sigma", sift_denoise_sigma, 30, 10,
+		"Gaussian blur of the image before SIFT against pixel noise [px std] (0: none)");
 	c.write(s, "sift_upsample", sift_upsample, 30, 10,
 		"SIFT's first octave on the image doubled (true: finest features) or as it is (false: about 2x faster)");
 	c.write(s, "match_ratio", match_ratio, 30, 10, "Ratio test: best / second-best distance below this");
@@ -142,8 +128,6 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_max_points", creation_max_points, 30, 10, "Points kept per landmark at most");
 	c.write(s, "creation_max_reprojection_px", creation_max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");
 	c.write(s, "creation_min_parallax_deg", creation_min_parallax_deg, 30, 10, "Widest angle between a point's rays at least [deg]");
-	c.write(s, "creation_max_depth_std", creation_max_depth_std, 30, 10,
-		"Drop points whose depth std exceeds this share of their distance (0: no limit)");
 	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
 	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
@@ -160,21 +144,8 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
 	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
 	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC draw budget");
-	c.write(s, "recognition_ransac_early_stop", recognition_ransac_early_stop, 30, 10,
-		"Stop RANSAC once a pose with enough inliers would have been found (99.9%)");
 	c.write(s, "recognition_local_optimization", recognition_local_optimization, 30, 10,
 		"Refine the best RANSAC pose on its inliers while they grow, also when RANSAC found too few");
-	c.write(s, "recognition_ransac", recognition_ransac, 30, 10, "PnP RANSAC: classic (solvePnPRansac, AP3P) | usac (OpenCV USAC, faster)");
-	c.write(s, "recognition_planar", recognition_planar, 30, 10,
-		"Refine the pose and count inliers with the robot on the floor plane (camera mount fixed)");
-	c.write(s, "recognition_min_inlier_ratio", recognition_min_inlier_ratio, 30, 10,
-		"Least share of the descriptor matches that must be PnP inliers");
-	c.write(s, "recognition_max_std_xy", recognition_max_std_xy, 30, 10,
-		"Reject a measurement whose predicted position std exceeds this [m] (0: off)");
-	c.write(s, "recognition_max_std_phi_deg", recognition_max_std_phi * 180 / M_PI, 30, 10,
-		"Reject a measurement whose predicted heading std exceeds this [deg] (0: off)");
-	c.write(s, "recognition_structure_uncertainty", recognition_structure_uncertainty, 30, 10,
-		"Add each point's depth uncertainty from creation to the predicted measurement uncertainty (6-DOF solve)");
 	c.write(s, "recognition_structure_weighted", recognition_structure_weighted, 30, 10,
 		"Refine the pose weighting each inlier by its pixel noise plus its point's depth uncertainty from creation (6-DOF solve)");
 	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
@@ -211,8 +182,6 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Heading change: largest turn between two images looked for [deg]");
 	c.write(s, "heading_change_min_depth", heading_change_min_depth, 30, 10,
 		"Heading change: nearest depth of a scene point [m] (bounds the parallax a fit may assume)");
-	c.write(s, "heading_change_max_chord_z", heading_change_max_chord_z, 30, 10,
-		"Heading change: drop it if the images put the chord this many stds off its arc (a sideways slip; 0: no test)");
 	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
 	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");
 	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");

@@ -22,11 +22,15 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	// Features (OpenCV SIFT)
 	int sift_features = 600;  //!< strongest features kept per image (0: all)
 	double sift_contrast_threshold = 0.03;
-	double sift_edge_threshold = 10;
 	/** SIFT's first octave on the image doubled (OpenCV's way: the finest
 	 * features), or on the image as it is (false: about half the time, and
 	 * fewer features on small images). */
 	bool sift_upsample = true;
+	/** Gaussian blur (std, px) of the image before SIFT: a cheap camera's
+	 * pixel noise and JPEG blocks make fine-scale extrema that do not repeat
+	 * from one image to the next; a slight blur takes them out and the
+	 * features left match across views far more often (0: none). */
+	double sift_denoise_sigma = 0;
 	/** Lowe's ratio test between the best and second-best match. */
 	double match_ratio = 0.8;
 
@@ -47,11 +51,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double creation_max_reprojection_px = 2.0;  //!< per view, after refinement
 	double creation_min_parallax_deg = 1.0;  //!< widest angle between a point's rays
 	double creation_max_depth = 20;  //!< m from the landmark frame
-	/** Points whose depth std along their ray (from the views' geometry and
-	 * the fit's pixel noise, StructureUncertainty.h) exceeds this share of
-	 * their distance are dropped (0: no limit). Unlike the parallax angle it
-	 * counts the focal length, the pixel noise and every view. */
-	double creation_max_depth_std = 0;
 	/** Odometry's uncertainty between creation views, as priors in the
 	 * bundle adjustment: heading (deg) and translation relative to the
 	 * distance travelled. They keep forward-motion reconstructions from
@@ -97,41 +96,13 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	int recognition_min_votes = 10;
 	int recognition_max_candidates = 5;  //!< candidates tried per image
 	int recognition_min_inliers = 12;  //!< PnP inliers to accept a pose
-	/** ... and at least this share of the descriptor matches must be PnP
-	 * inliers (a chance consensus among many wrong matches is a small share). */
-	double recognition_min_inlier_ratio = 0;
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
 	int recognition_ransac_iterations = 300;  //!< RANSAC's draw budget
-	/** Stop the RANSAC, within that budget, once a pose with enough inliers
-	 * (recognition_min_inliers, recognition_min_inlier_ratio) would have been
-	 * drawn with its confidence (RansacIterations.h); false: the budget's
-	 * draws are spent on every candidate that fails. */
-	bool recognition_ransac_early_stop = true;
 	/** Refine RANSAC's best pose on its inliers and count them again, while
 	 * the set grows (LO-RANSAC's local optimization), also when RANSAC's own
 	 * count falls short; false: one refinement, and only of a pose RANSAC
 	 * already found with recognition_min_inliers. */
 	bool recognition_local_optimization = false;
-	/** RANSAC for the PnP pose: "classic" (OpenCV's solvePnPRansac, AP3P
-	 * minimal sets) or "usac" (OpenCV's USAC framework: P3P minimal sets,
-	 * MSAC score, uniform sampling with a fixed seed; about half the pose
-	 * time, results.md 9.15). */
-	std::string recognition_ransac = "classic";
-	/** Refine the PnP pose with the robot on the floor plane (x, y, theta in
-	 * the landmark frame, camera mount fixed) and count inliers of that pose;
-	 * false: the 6-DOF pose as solved. */
-	bool recognition_planar = false;
-	/** A recognition whose predicted measurement uncertainty (from the pose
-	 * solve's geometry, LandmarkRecognizer.h) exceeds these is dropped:
-	 * few points in a small part of the image measure the pose poorly,
-	 * whatever their reprojection error (0: no limit). */
-	double recognition_max_std_xy = 0;  //!< m
-	double recognition_max_std_phi = 0;  //!< rad (INI: degrees)
-	/** Count each point's depth uncertainty from creation (its short
-	 * baseline) in the predicted measurement uncertainty, not only the
-	 * inliers' pixel error (StructureUncertainty.h; 6-DOF solve only).
-	 * Landmarks then keep each point's depth std (4 bytes per point). */
-	bool recognition_structure_uncertainty = false;
 	/** Refine the pose with each inlier weighted by its pixel noise plus its
 	 * point's depth uncertainty from creation (generalized least squares,
 	 * WeightedPoseRefinement.h); the predicted uncertainty is then that
@@ -139,7 +110,7 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * (4 bytes per point). */
 	bool recognition_structure_weighted = false;
 	/** Whether landmarks keep each point's depth std. */
-	bool keepsDepthStd() const { return recognition_structure_uncertainty || recognition_structure_weighted; }
+	bool keepsDepthStd() const { return recognition_structure_weighted; }
 	/** A recognition is kept only if its pose explains the inliers better
 	 * than the best competing pose (the mirror pose of a plane seen small,
 	 * PoseAmbiguity.h) by at least this much: the difference of their
@@ -204,9 +175,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	/** Nearest depth a scene point may have, m: bounds the parallax that may
 	 * separate a match's bearing change from the heading change. */
 	double heading_change_min_depth = 0.2;
-	/** Drop a heading change whose images put the robot's chord more than
-	 * this many stds off its arc (a sideways slip; 0: no test). */
-	double heading_change_max_chord_z = 0;
 
 	// Map bounding
 	/** Most landmarks kept (0: no limit); beyond it the least useful go. */

@@ -21,7 +21,7 @@ struct VisualLandmarkModel
 	std::vector<cv::Point3f> points;  //!< landmark frame, metres
 	/** Per point: its std along the ray from the camera that built the
 	 * landmark, relative to its distance (StructureUncertainty.h); kept
-	 * only with recognition_structure_uncertainty, empty otherwise (the
+	 * only with recognition_structure_weighted, empty otherwise (the
 	 * points are then taken as exact). */
 	std::vector<float> depthStd;
 	/** One row per point: CV_32F (128 floats), or CV_8U when compact. */

@@ -49,7 +49,7 @@ TEST(HomeGenerator, EveryRoomIsReachableAndItsPathsAreCollisionFree)
 		for (const auto& r : h.rooms)
 		{
 			const Eigen::Vector2d size = r.hi - r.lo;
-			if (r.kind != "hallway") EXPECT_GE(size.minCoeff(), 2.5 - 0.2 - 1e-9) << r.kind;
+			if (r.kind != "hallway") { EXPECT_GE(size.minCoeff(), 2.5 - 0.2 - 1e-9) << r.kind; }
 			EXPECT_LE(size.maxCoeff(), 14.0) << r.kind;
 			int reachable = 0;
 			for (double x = r.lo[0]; x < r.hi[0]; x += 0.1)
