@@ -150,6 +150,18 @@ void writeMetrics(const std::string& file, const Metrics& m)
 	for (const auto& [k, v] : m) out << k << " " << v << "\n";
 }
 
+/** What a task ran, as its done file records it: the command with the
+ * program's folder left out, so that finished tasks stay finished when the
+ * binaries move (another build folder, an installed copy). A record of an
+ * older version, with the folder, reads the same. */
+std::string taskRecord(const std::string& joinedCommand)
+{
+	const size_t space = joinedCommand.find(' ');
+	const std::string program = joinedCommand.substr(0, space);
+	const std::string rest = space == std::string::npos ? std::string() : joinedCommand.substr(space);
+	return fs::path(program).filename().string() + rest;
+}
+
 /** The program on the PATH, or the bare name (its run then fails clearly). */
 std::string onPath(const std::string& program)
 {
@@ -241,7 +253,8 @@ TaskOutcome runTask(const BatchPlan& plan, const Task& task, const std::string& 
 	TaskOutcome outcome;
 	const Metrics old = readMetrics(task.dir + "/metrics.txt");
 	const bool scored = task.kind != Task::Kind::Run || (old.count("wall_s") && old.count("peak_mib"));
-	if (scored && fs::exists(doneFile) && readText(doneFile) == joined(command) + "\n")
+	const std::string record = taskRecord(joined(command));
+	if (scored && fs::exists(doneFile) && taskRecord(readText(doneFile)) == record + "\n")
 	{
 		outcome.ok = outcome.skipped = true;
 		outcome.message = "done before";
@@ -307,7 +320,7 @@ TaskOutcome runTask(const BatchPlan& plan, const Task& task, const std::string& 
 	}
 	else
 		outcome.message = "rendered in " + std::to_string(int(process.wallSeconds)) + " s";
-	std::ofstream(doneFile) << joined(command) << "\n";
+	std::ofstream(doneFile) << record << "\n";
 	outcome.ok = true;
 	return outcome;
 }

@@ -112,6 +112,16 @@ TEST(VslamBatch, RunsTheGridSummarizesAndResumes)
 	EXPECT_TRUE(contains(again.output, "1 run, 3 done before, 0 failed")) << again.output;
 	EXPECT_EQ(readFile(v30 + "/seed1/vslam/estimated_path.tum"), path);  // same seed, same run
 
+	// Finished tasks stay finished when the binaries move: a record naming
+	// the program in another folder is the same task.
+	const std::string doneFile = v30 + "/seed2/done";
+	const std::string record = readFile(doneFile);
+	ASSERT_EQ(record.rfind("vslam ", 0), 0u) << record;  // recorded without the folder
+	std::ofstream(doneFile) << "/another/build/bin/" << record;
+	const auto moved = runCommand(kBatch + "'" + batch + "'");
+	ASSERT_EQ(moved.exitCode, 0) << moved.output;
+	EXPECT_TRUE(contains(moved.output, "0 run, 4 done before, 0 failed")) << moved.output;
+
 	// Metrics of an older scoring are scored again from the outputs, without
 	// running vslam again.
 	const std::string metricsFile = v60 + "/seed1/metrics.txt";
