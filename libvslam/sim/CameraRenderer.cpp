@@ -18,6 +18,17 @@ namespace
 constexpr double kPixelCentreShift = 0.5;
 }  // namespace
 
+#ifdef __SANITIZE_ADDRESS__
+/** Mesa's software rasterizer (and the LLVM it compiles shaders with) keeps
+ * some allocations until the process exits; LeakSanitizer would fail every
+ * program that renders. Only leaks whose stack is inside those libraries
+ * are ignored: the renderer's own allocations are still checked. */
+extern "C" const char* __lsan_default_suppressions()
+{
+	return "leak:swrast_dri.so\nleak:libLLVM\nleak:libgallium\nleak:libGLX_mesa\nleak:libEGL_mesa\n";
+}
+#endif
+
 CameraRenderer::CameraRenderer(const mrpt::img::TCamera& camera) : m_camera(camera)
 {
 	const int W = static_cast<int>(camera.ncols), H = static_cast<int>(camera.nrows);
