@@ -6,6 +6,7 @@
  * writes OUTPUT.rawlog, OUTPUT_groundtruth.tum and OUTPUT_landmarks.txt. */
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
+#include <libvslam/config/ConfigReference.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/KeyValidation.h>
@@ -19,14 +20,14 @@ namespace
 {
 const char* kUsage =
 	"Usage: vslam-simul-measurements CONFIG.ini OUTPUT.rawlog [--set vslam_sim.KEY=VALUE ...]\n"
-	"       vslam-simul-measurements --print-default-config\n";
+	"       vslam-simul-measurements --print-default-config [--markdown]\n";
 }
 
 int main(int argc, const char** argv)
 {
 	using namespace vslam;
 	return vslam::runTool("vslam-simul-measurements", kUsage, [&]() -> int {
-		const ToolArguments args = parseToolArguments(argc, argv, {}, {"--help", "--print-default-config"});
+		const ToolArguments args = parseToolArguments(argc, argv, {}, {"--help", "--print-default-config", "--markdown"});
 		if (args.has("--help"))
 		{
 			std::cout << kUsage;
@@ -34,7 +35,8 @@ int main(int argc, const char** argv)
 		}
 		if (args.has("--print-default-config"))
 		{
-			std::cout << config::toIniText(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
+			const std::string text = config::toIniText(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
+			std::cout << (args.has("--markdown") ? config::markdownReference(text) : text);
 			return 0;
 		}
 		const auto& positional = args.positional;

@@ -11,6 +11,7 @@
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/config/ConfigReference.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/io/CRawlogReader.h>
@@ -29,7 +30,7 @@ namespace
 {
 const char* kUsage =
 	"Usage: vslam-simul CONFIG.ini OUTPUT.rawlog [--set vslam_simul.KEY=VALUE ...] [--quiet]\n"
-	"       vslam-simul --print-default-config\n"
+	"       vslam-simul --print-default-config [--markdown]\n"
 	"       vslam-simul --list-furniture\n";
 }
 
@@ -38,7 +39,7 @@ int main(int argc, const char** argv)
 	using namespace vslam;
 	return vslam::runTool("vslam-simul", kUsage, [&]() -> int {
 		const ToolArguments args =
-			parseToolArguments(argc, argv, {}, {"--help", "--print-default-config", "--list-furniture", "--quiet"});
+			parseToolArguments(argc, argv, {}, {"--help", "--print-default-config", "--markdown", "--list-furniture", "--quiet"});
 		if (args.has("--help"))
 		{
 			std::cout << kUsage;
@@ -55,7 +56,8 @@ int main(int argc, const char** argv)
 		}
 		if (args.has("--print-default-config"))
 		{
-			std::cout << config::toIniText(TVisualSimOptions(), TVisualSimOptions::kSection);
+			const std::string text = config::toIniText(TVisualSimOptions(), TVisualSimOptions::kSection);
+			std::cout << (args.has("--markdown") ? config::markdownReference(text) : text);
 			return 0;
 		}
 		const auto& positional = args.positional;

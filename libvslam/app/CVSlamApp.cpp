@@ -1,6 +1,7 @@
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/app/InterruptFlag.h>
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/config/ConfigReference.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
@@ -34,7 +35,7 @@ std::string CVSlamApp::usage()
 {
 	return "Usage: vslam CONFIG.ini [RAWLOG] [--out DIR] [--set SECTION.KEY=VALUE ...]\n"
 		   "             [--quiet]\n"
-		   "       vslam --print-default-config | --help | --version\n"
+		   "       vslam --print-default-config [--markdown] | --help | --version\n"
 		   "\n"
 		   "Runs the vSLAM particle filter (Karlsson et al. 2005) over an MRPT rawlog\n"
 		   "(actions/sensory-frames or observations format, plain or gzip).\n"
@@ -122,7 +123,9 @@ bool CVSlamApp::initialize(int argc, const char** argv)
 		}
 		if (a == "--print-default-config")
 		{
-			std::cout << defaultConfigText();
+			// --markdown: the configuration reference (doc/configuration.md).
+			const bool markdown = i + 1 < argc && std::string(argv[i + 1]) == "--markdown";
+			std::cout << (markdown ? config::markdownReference(defaultConfigText()) : defaultConfigText());
 			return false;
 		}
 		if (a == "--out")
