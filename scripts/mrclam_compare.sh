@@ -1,5 +1,5 @@
 #!/bin/bash
-# MRCLAM comparison (doc/results.md): for each robot of one data set,
+# MRCLAM comparison: for each robot of one data set,
 #   - import it with mrclam2rawlog (rawlog + ground truth in the start frame),
 #   - run vslam with config_ini/mrclam_range_bearing.ini for several seeds,
 #   - run MRPT's kf-slam (CRangeBearingKFSLAM2D) with config_ini/peers/kf-slam_mrclam.ini,

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Side by side on one rawlog (doc/results.md): vslam, odometry alone, and
+# Side by side on one rawlog: vslam, odometry alone, and
 # MRPT's own SLAM with its documented best settings (config_ini/peers/):
 # rbpf-slam grid mapping when the rawlog has laser scans, kf-slam when it has
 # range-bearing observations. Prints one Markdown table: ATE (raw, and after

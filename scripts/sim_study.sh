@@ -1,5 +1,5 @@
 #!/bin/bash
-# Accuracy on simulated runs (doc/results.md): for each seed, simulate a run
+# Accuracy on simulated runs: for each seed, simulate a run
 # with vslam-simul-measurements, run vslam on it (starting at the true first
 # pose), and print ATE RMSE of vslam and of dead reckoning per seed and the
 # means.
@@ -7,7 +7,7 @@
 #   scripts/sim_study.sh SIM_INI VSLAM_INI [SEEDS] [OUT_DIR] [-- --set ... (simulator and vslam keys)]
 #
 # Keys after -- go to both programs: vslam_sim.* to the simulator, the rest
-# to vslam. Example (doc/results.md, visual SLAM):
+# to vslam. Example:
 #   scripts/sim_study.sh config_ini/simul_measurements_example.ini config_ini/demo_visual.ini \
 #       "1 2 3 4 5 6 7 8 9 10" /tmp/vslam_sim -- --set vslam_sim.duration=600 \
 #       --set vslam_sim.odo_scale_bias=0.02 --set vslam_sim.odo_turn_bias=0.03

@@ -106,7 +106,6 @@ void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 					"its predicted covariance): all %zu (%.2f%%), accepted %zu (%.2f%%)\n",
 			filter.visual.predicted_cov_scale, a.all.beyond3SigmaOfItsNoise, 100 * a.all.shareBeyond3SigmaOfItsNoise(),
 			a.accepted.beyond3SigmaOfItsNoise, 100 * a.accepted.shareBeyond3SigmaOfItsNoise());
-	// (Not "vslam-frontend: accepted", the row scripts/rendered_study.sh reads.)
 	std::printf("vslam-frontend: median e^T D^-1 e of the accepted, the squared error over the noise (2.37 if the "
 				"noise were right): of Sigma_vis %.2f",
 		a.accepted.medianNeesSigmaVis);

@@ -99,7 +99,7 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	m["odometry_ate_mean"] = odo.mean;
 	m["odometry_rpe_1s_rmse"] = computeRpe(odometry, truth).translation.rmse;
 	// Kidnaps: the ground truth jumps while the run lasts. Recovered within
-	// 10 s (results.md section 2): the error comes within 0.3 m and stays for
+	// 10 s: the error comes within 0.3 m and stays for
 	// 5 s; and, since a SLAM map is itself off by the run's error level, also
 	// to that level: within twice the median error of the minute before the
 	// kidnap (at least 0.3 m).

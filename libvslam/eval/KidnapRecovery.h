@@ -1,9 +1,9 @@
 #pragma once
 /** \file KidnapRecovery.h
  * When a filter has found itself again after a kidnap: the first time from
- * which the position error stays within a bound for a hold time (as in
- * doc/results.md: within 0.3 m for 5 s, recovered if that starts within
- * 10 s of the kidnap). */
+ * which the position error stays within a bound for a hold time (the
+ * evaluation's: within 0.3 m for 5 s, recovered if that starts within 10 s
+ * of the kidnap). */
 #include <optional>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 /** \file LandmarkScaleOracle.h
  * What a landmark's scale error costs: its measurements with the scale
- * taken out, for `vslam-frontend --oracle-kind scale` (results.md 9.48).
+ * taken out, for `vslam-frontend --oracle-kind scale`.
  *
  * A landmark built k times too large (its lengths over the true ones)
  * measures the camera's position in the landmark frame k times too far from

@@ -1,7 +1,6 @@
 /** The front-end on real photographs with exact poses (../shared/data/strecha;
  * skipped with a message when absent). Bounds are the issue's goals where
- * they are met and otherwise the measured figures with a margin
- * (doc/results.md section "Visual front-end"). */
+ * they are met and otherwise the measured figures with a margin. */
 #include <gtest/gtest.h>
 #include <libvslam/eval/PosedImageEvaluation.h>
 #include <tests/support/SharedData.h>

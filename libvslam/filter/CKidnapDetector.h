@@ -60,8 +60,7 @@ class CKidnapDetector
 		 * landmark contradicts the kidnap (see the file comment). */
 		bool revert_on_contradiction = true;
 		/** Draw a new hypothesis from every pose measurement of its first
-		 * frame (a mixture), not only the most informative one
-		 * (doc/results.md 9.25: no better on the kidnap batch). */
+		 * frame (a mixture), not only the most informative one. */
 		bool hypothesis_from_every_measurement = false;
 
 		void loadFromConfigFile(

@@ -71,13 +71,13 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 	/** Re-initialize a landmark after this many consecutive measurements
 	 * that no particle explains while the robot is localized (0: never).
 	 * Off by default: a landmark recognized falsely but consistently would be
-	 * moved to where the false recognitions put it (results.md 9.35-9.36). */
+	 * moved to where the false recognitions put it. */
 	uint32_t reinit_after_unexplained = 0;
 	/** Add the particle cloud's pose covariance at creation (propagated to
 	 * the landmark) to a new landmark's covariance. Off (FastSLAM proper):
 	 * the particles' own poses already represent where the robot was, and a
 	 * landmark widened by the cloud absorbs the loop closures that should
-	 * tell good particles from bad ones (doc/results.md 9.10). On: the
+	 * tell good particles from bad ones. On: the
 	 * uncertainty survives resampling's loss of path diversity in the
 	 * landmark, so a later sighting corrects the landmark instead of pulling
 	 * the robot. */

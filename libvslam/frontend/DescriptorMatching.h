@@ -12,7 +12,7 @@
  * (grass, foliage) one landmark point resembles many image features;
  * taking the best of them still passes a's one-way test when the landmark
  * holds no second similar point, and a handful of such matches can agree
- * on a wrong pose (results.md 9.43, 9.45).
+ * on a wrong pose.
  */
 #include <opencv2/core.hpp>
 

@@ -4,7 +4,7 @@
  * they share: a visual gyro beside the wheels. Wheel odometry's heading is
  * its weakest part (slip in turns, a wheelbase that is never exact), and the
  * heading error of the stretches between landmarks is most of vSLAM's error
- * while it explores (doc/results.md 9.28).
+ * while it explores.
  *
  * Model: between the two images the robot turns by theta and moves by a
  * chord of length d (from the odometry) in direction alpha from its start
@@ -36,13 +36,13 @@
  * translation can give at `minDepth`: beyond that the fit explains the
  * matches with a motion the robot did not make, e.g. a slip the odometry
  * missed, near a surface, which the epipolar distance alone cannot tell
- * from a turn (results.md 9.28). The predicted std
+ * from a turn. The predicted std
  * is that of the least-squares fit (the inliers' residual scatter over the
  * sum of their squared derivatives) plus the chord direction's prior
  * spread carried through the fit's sensitivity to it. The images are not
  * asked for alpha: a few centimetres of travel give its direction so
  * poorly that a fit of both trusted its alpha 2.5 times too much and theta
- * with it (results.md 9.28).
+ * with it.
  */
 #include <libvslam/frontend/ImageFeatures.h>
 #include <mrpt/poses/CPose3D.h>

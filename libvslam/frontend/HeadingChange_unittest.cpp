@@ -355,7 +355,7 @@ TEST(HeadingChange, ASlipTheOdometryMissedNearASurfaceGivesNothing)
 	// alone ends far from the truth. Its inliers' bearing changes are then
 	// further from its theta than any parallax the assumed motion can give:
 	// no estimate, rather than a wrong one (the rendered living room's worst
-	// case, results.md 9.28).
+	// case).
 	std::mt19937 rng(23);
 	const auto mount = mountAt(0.1, 0);
 	const double theta = -11.46 * kDeg;

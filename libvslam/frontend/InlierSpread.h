@@ -6,7 +6,7 @@
  * trade against each other. Worse, on a self-similar texture (grass, moss,
  * foliage) a handful of wrong matches inside such a strip can agree on a
  * coherent wrong pose with a small reprojection error and a small predicted
- * covariance, metres and tens of degrees from the truth (results.md 9.43).
+ * covariance, metres and tens of degrees from the truth.
  * The spread is the standard deviation of the inliers' normalized image
  * coordinates ((u - cx) / fx, (v - cy) / fy) along their minor principal
  * axis: an angle in radians (small-angle), independent of the image's

@@ -294,8 +294,7 @@ TEST(LandmarkPipeline, AnUnmodelledMountTiltShowsAsSlopeGrowingWithTheTurn)
 	// Between robot poses dtheta apart in heading, the pose the recognizer
 	// finds is then a turn about an axis tilted by d, whose Slope is
 	// acos(1 - sin^2 d (1 - cos dtheta)), about 2 d sin(dtheta / 2): what a
-	// pre-filter Slope bound must leave room for on a real robot (results.md
-	// 9.26). No pixel noise: the effect alone.
+	// pre-filter Slope bound must leave room for on a real robot. No pixel noise: the effect alone.
 	const double d = 1 * kDeg;
 	const mrpt::poses::CPose3D trueMount = mrpt::poses::CPose3D(0, 0, 0, 0, d, 0) + kMount;
 	std::mt19937 rng(10);

@@ -4,11 +4,11 @@
  * to now by the odometry. On self-similar textures (grass, moss) a handful
  * of wrong matches can agree on a coherent pose metres and tens of degrees
  * off, with a small reprojection error and a small predicted covariance;
- * nothing in the one image tells it from a right one (results.md 9.43). Such
+ * nothing in the one image tells it from a right one. Such
  * recognitions alternate with right ones of the same landmark within a
  * second, and the odometry over that second rules the jump out. The
  * front-end has no map, only the odometry; over a few seconds its drift is
- * centimetres, so the tolerance can be tight (results.md 9.44).
+ * centimetres, so the tolerance can be tight.
  */
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/poses/CPose2D.h>

@@ -54,7 +54,7 @@ TEST(OdometryConsistency, AcceptsWithinThePositionToleranceGrowingWithDistance)
 	EXPECT_TRUE(agrees(0, 0, 9.9));
 	EXPECT_FALSE(agrees(0, 0, -10.1));
 	EXPECT_FALSE(agrees(0, 0, 180));
-	// The gross error of results.md 9.43: 2.6 m and 72 deg off.
+	// A gross error seen on grass textures: 2.6 m and 72 deg off.
 	EXPECT_FALSE(agrees(-1.0, 2.4, 72));
 	// The relative share: 0.7 m off fails at 3.8 m (0.68 m allowed) and
 	// passes at 7.8 m (1.08 m allowed).

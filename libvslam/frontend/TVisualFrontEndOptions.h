@@ -65,8 +65,7 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * about 10% at the image's edges, and every later measurement of it
 	 * errs in heading in proportion to its distance from the creation. It
 	 * halves the measurements' median heading error on the rendered
-	 * sequences, but the filter's error does not fall with it, so it is off
-	 * (results.md 9.29). */
+	 * sequences, but the filter's error does not fall with it, so it is off. */
 	bool creation_visual_heading = false;
 	/** Match the creation views' features near the epipolar lines the
 	 * odometry predicts (a band of 3 sigma of creation_odometry_sigma_deg
@@ -74,8 +73,7 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * compares a feature only with the candidates the geometry allows, so
 	 * texture repeated elsewhere in the image no longer vetoes its match.
 	 * On the rendered rooms it halves the living room's measurements beyond
-	 * 3 sigma, but the filter's error does not fall with it, so it is off
-	 * (results.md 9.33). */
+	 * 3 sigma, but the filter's error does not fall with it, so it is off. */
 	bool creation_guided_matching = false;
 
 	/** Refine each landmark's scale from its later sightings against the

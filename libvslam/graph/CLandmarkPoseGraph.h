@@ -70,8 +70,8 @@ class CLandmarkPoseGraph
 		/** Which pose of the cloud is moved onto the solution's current
 		 * keyframe, the cloud rigidly with it: "mean" (the cloud's weighted
 		 * mean, the online estimate's) or "best_particle" (the highest
-		 * weight; before results.md 9.39, which carried the mean past the
-		 * solution by the best particle's offset from it). */
+		 * weight, which carries the mean past the solution by the best
+		 * particle's offset from it). */
 		std::string cloud_anchor = "mean";
 
 		void loadFromConfigFile(

@@ -41,7 +41,7 @@ struct TMrclamImportOptions
 	 * (the rows look like commanded twist): odometry row times are shifted
 	 * by it. Measured by cross-correlating odometry omega with the
 	 * ground-truth yaw rate: +0.15 s on robots 1, 2 and 3 of Dataset 6
-	 * (doc/results.md). 0 keeps the file's times. */
+	 *. 0 keeps the file's times. */
 	double odometry_delay = 0.15;  //!< s
 	/** Sensor noise written into each observation (dataset README: robust
 	 * std 0.13 m and 0.009 rad). */
@@ -49,7 +49,7 @@ struct TMrclamImportOptions
 	double std_bearing = 1.0 * M_PI / 180;  //!< rad
 	/** Noise model of the odometry increments: their covariance is written
 	 * into each action (kf-slam and rbpf-slam take their motion noise from
-	 * it). Defaults: characterized on robot 1's odometry (doc/results.md). */
+	 * it). Defaults: characterized on robot 1's odometry. */
 	CMotionModel::TOptions motion = defaultMotion();
 
 	static CMotionModel::TOptions defaultMotion()
