@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace vslam;
@@ -83,6 +84,29 @@ TEST(ConfigFiles, TheExampleShowsTheDefaults)
 	std::string expected;
 	defaults.getContent(expected);
 	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), expected);
+}
+
+TEST(ConfigFiles, TheDemoIsTheCameraConfigurationWithTheDemosFiles)
+{
+	// Only these [vslam] keys may differ: the demo's data, output and seed.
+	const std::set<std::string> demoOnly = {
+		"rawlog_file", "output_dir", "random_seed", "ground_truth_file", "initial_pose_from_ground_truth"};
+	const mrpt::config::CConfigFileMemory camera(effectiveOptions(kConfigDir / "camera.ini"));
+	const mrpt::config::CConfigFileMemory demo(effectiveOptions(kConfigDir / "demo_rendered.ini"));
+	std::vector<std::string> sections;
+	camera.getAllSections(sections);
+	ASSERT_FALSE(sections.empty());
+	for (const auto& section : sections)
+	{
+		std::vector<std::string> keys;
+		camera.getAllKeys(section, keys);
+		for (const auto& key : keys)
+		{
+			if (lower(section) == TVSlamAppOptions::kSection && demoOnly.count(lower(key))) continue;
+			EXPECT_EQ(demo.read_string(section, key, "<absent>"), camera.read_string(section, key, "<absent>"))
+				<< "[" << section << "] " << key;
+		}
+	}
 }
 
 TEST(ConfigFiles, EveryShippedVslamIniLoads)
