@@ -41,8 +41,6 @@ TScaleRefinementSettings scaleSettings(const TVisualFrontEndOptions& o)
 	TScaleRefinementSettings s;
 	// 0 left unresolved (options not read from an INI): the motion model's default.
 	s.odometrySigma = o.scale_odometry_sigma > 0 ? o.scale_odometry_sigma : CMotionModel::TOptions().sigma_T;
-	s.pairMinTravel = o.scale_pair_min_travel;
-	s.pairMaxTravel = o.scale_pair_max_travel;
 	return s;
 }
 

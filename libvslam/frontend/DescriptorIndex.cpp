@@ -10,12 +10,19 @@
 
 using namespace vslam;
 
+namespace
+{
+/** FLANN's randomized k-d trees per index level: more trees found no more
+ * recognitions for their search time. */
+constexpr int kFlannTrees = 1;
+}  // namespace
+
 std::unique_ptr<DescriptorIndex> DescriptorIndex::create(
 	const TVisualFrontEndOptions& options, const DescriptorCodec& codec)
 {
 	if (options.search_index == "kdtree") return std::make_unique<KdTreeDescriptorIndex>(codec, options.search_eps);
 	if (options.search_index == "flann")
-		return std::make_unique<FlannDescriptorIndex>(codec, options.search_flann_trees, options.search_checks);
+		return std::make_unique<FlannDescriptorIndex>(codec, kFlannTrees, options.search_checks);
 	if (options.search_index == "bbf")
 		return std::make_unique<BestBinFirstDescriptorIndex>(codec, options.search_bbf_compared);
 	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (kdtree | flann | bbf)");

@@ -123,8 +123,6 @@ HeadingChangeSettings vslam::headingChangeSettings(const TVisualFrontEndOptions&
 	s.matchRatio = o.match_ratio;
 	s.minInliers = o.heading_change_min_inliers;
 	s.inlierPx = o.heading_change_inlier_px;
-	s.maxTurn = o.heading_change_max_turn;
-	s.minDepth = o.heading_change_min_depth;
 	return s;
 }
 

@@ -32,8 +32,8 @@
  *
  * Pairs are chained (each sighting is the next pair's start) so their
  * odometry noise is independent; a pair is formed once the robot has
- * travelled scale_pair_min_travel (short pairs measure little), and not
- * over more than scale_pair_max_travel (odometry drift).
+ * travelled pairMinTravel (short pairs measure little), and not over more
+ * than pairMaxTravel (odometry drift).
  *
  * A wrong or poor recognition at either end makes a wrong pair. Every pair
  * is judged again whenever one is added, against the estimate from the

@@ -46,10 +46,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
 	scale_odometry_sigma =
 		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::nonNegative());
-	scale_pair_min_travel =
-		readDouble(c, s, "scale_pair_min_travel", scale_pair_min_travel, Range::positive());
-	scale_pair_max_travel =
-		readDouble(c, s, "scale_pair_max_travel", scale_pair_max_travel, Range::positive());
 	recognition_min_votes = readCount("recognition_min_votes", recognition_min_votes, 1, 100000);
 	recognition_max_candidates =
 		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);
@@ -68,14 +64,10 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_match_both_ways = readBool(c, s, "recognition_match_both_ways", recognition_match_both_ways);
 	auto& gate = recognition_odometry_gate;
 	gate.horizon = readDouble(c, s, "recognition_odometry_gate_s", gate.horizon, Range::nonNegative());
-	gate.position = readDouble(c, s, "recognition_odometry_gate_m", gate.position, Range::nonNegative());
-	gate.relative = readDouble(c, s, "recognition_odometry_gate_rel", gate.relative, Range::nonNegative());
-	gate.heading = readDegreesAsRadians(c, s, "recognition_odometry_gate_deg", gate.heading, Range::closed(0, 180));
 	recognition_guided_radius_px =
 		readDouble(c, s, "recognition_guided_radius_px", recognition_guided_radius_px, Range::nonNegative());
 	search_index = readWord(c, s, "search_index", search_index, {"kdtree", "flann", "bbf"});
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
-	search_flann_trees = readCount("search_flann_trees", search_flann_trees, 1, 16);
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
 	search_bbf_compared = readCount("search_bbf_compared", search_bbf_compared, 1, 100000000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
@@ -85,10 +77,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	heading_change_min_inliers = readCount("heading_change_min_inliers", heading_change_min_inliers, 5, 100000);
 	heading_change_inlier_px =
 		readDouble(c, s, "heading_change_inlier_px", heading_change_inlier_px, Range::positive());
-	heading_change_max_turn = readDegreesAsRadians(
-		c, s, "heading_change_max_turn_deg", heading_change_max_turn, {0, 90, false, true});
-	heading_change_min_depth =
-		readDouble(c, s, "heading_change_min_depth", heading_change_min_depth, Range::positive());
 	max_landmarks = readCount("max_landmarks", max_landmarks, 0, 1e9);
 	prune_after_misses = readCount("prune_after_misses", prune_after_misses, 0, 1e9);
 	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
@@ -97,8 +85,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	cy = readDouble(c, s, "cy", cy, Range::nonNegative());
 	if (creation_max_baseline < creation_min_baseline)
 		throw ConfigError("[" + s + "] creation_max_baseline must be >= creation_min_baseline");
-	if (scale_pair_max_travel < scale_pair_min_travel)
-		throw ConfigError("[" + s + "] scale_pair_max_travel must be >= scale_pair_min_travel");
 	if (creation_max_points < creation_min_points)
 		throw ConfigError("[" + s + "] creation_max_points must be >= creation_min_points");
 	if ((fx > 0) != (fy > 0))
@@ -137,8 +123,6 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Match creation views near the epipolar lines the odometry predicts");
 	c.write(s, "scale_refinement", scale_refinement, 30, 10, "Refine landmark scales from later sightings and odometry");
 	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (0: [vslam_motion_model] sigma_T)");
-	c.write(s, "scale_pair_min_travel", scale_pair_min_travel, 30, 10, "Travel between paired sightings, at least [m]");
-	c.write(s, "scale_pair_max_travel", scale_pair_max_travel, 30, 10, "Travel between paired sightings, at most [m]");
 	c.write(s, "recognition_min_votes", recognition_min_votes, 30, 10, "Feature votes that make a landmark a candidate");
 	c.write(s, "recognition_max_candidates", recognition_max_candidates, 30, 10, "Candidates tried per image");
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
@@ -155,18 +139,11 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_match_both_ways", recognition_match_both_ways, 30, 10,
 		"Keep a feature-to-point match only if the ratio test also passes from the point's side (against self-similar textures)");
 	c.write(s, "recognition_odometry_gate_s", recognition_odometry_gate.horizon, 30, 10,
-		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry [s] (0: off)");
-	c.write(s, "recognition_odometry_gate_m", recognition_odometry_gate.position, 30, 10,
-		"... position tolerance of that test [m], plus");
-	c.write(s, "recognition_odometry_gate_rel", recognition_odometry_gate.relative, 30, 10,
-		"... this share of the measured distance");
-	c.write(s, "recognition_odometry_gate_deg", recognition_odometry_gate.heading * 180 / M_PI, 30, 10,
-		"... heading tolerance of that test [deg]");
+		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry (by 0.3 m + 10% of its distance, or 10 deg) [s] (0: off)");
 	c.write(s, "recognition_guided_radius_px", recognition_guided_radius_px, 30, 10,
 		"After an accepted pose, seek its unmatched landmark points among the features this near their projection [px] (0: off)");
 	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks) | bbf (bounded codes compared)");
 	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
-	c.write(s, "search_flann_trees", search_flann_trees, 30, 10, "flann: randomized k-d trees per index level");
 	c.write(s, "search_checks", search_checks, 30, 10, "flann: leaves checked per query and level");
 	c.write(s, "search_bbf_compared", search_bbf_compared, 30, 10, "bbf: codes compared per query and level (leaves of 8)");
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");
@@ -178,10 +155,6 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Heading change: feature matches that must fit the motion");
 	c.write(s, "heading_change_inlier_px", heading_change_inlier_px, 30, 10,
 		"Heading change: epipolar distance of an inlier [px]");
-	c.write(s, "heading_change_max_turn_deg", heading_change_max_turn * 180 / M_PI, 30, 10,
-		"Heading change: largest turn between two images looked for [deg]");
-	c.write(s, "heading_change_min_depth", heading_change_min_depth, 30, 10,
-		"Heading change: nearest depth of a scene point [m] (bounds the parallax a fit may assume)");
 	c.write(s, "max_landmarks", max_landmarks, 30, 10, "Landmarks kept at most (0: no limit)");
 	c.write(s, "prune_after_misses", prune_after_misses, 30, 10, "Remove a landmark missed this often in a row when expected (0: never)");
 	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");

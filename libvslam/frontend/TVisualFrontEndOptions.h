@@ -86,8 +86,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * be the odometry's true noise: one stated too large makes landmarks
 	 * too small. */
 	double scale_odometry_sigma = 0;
-	double scale_pair_min_travel = 0.3;  //!< m of travel between paired sightings, at least
-	double scale_pair_max_travel = 2.0;  //!< ... and at most
 
 	// Database and recognition
 	/** A landmark is a candidate when this many image features vote for it. */
@@ -129,9 +127,8 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	bool recognition_match_both_ways = false;
 	/** A recognition is kept only if it agrees with the same landmark's last
 	 * kept one, carried to now by the odometry, when that one is at most
-	 * `horizon` old (OdometryConsistency.h). INI keys: recognition_odometry_gate_s
-	 * (the horizon; 0: no test), _m and _rel (within _m + _rel x its
-	 * distance) and _deg. */
+	 * `horizon` old (OdometryConsistency.h; INI key recognition_odometry_gate_s,
+	 * 0: no test). The tolerances are OdometryConsistency's. */
 	TOdometryConsistency recognition_odometry_gate;
 	/** After an accepted pose: the landmark points it leaves unmatched are
 	 * sought among the image features within this many pixels of where it
@@ -147,7 +144,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	/** kdtree: nanoflann's eps (0: exact). */
 	double search_eps = 2.0;
 	/** flann: randomized trees per level, and leaves checked per query and level. */
-	int search_flann_trees = 1;
 	int search_checks = 32;
 	/** bbf: codes compared per query and level (whole leaves of 8). */
 	int search_bbf_compared = 128;
@@ -168,11 +164,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	bool heading_change = false;
 	int heading_change_min_inliers = 20;  //!< matches that must fit the motion
 	double heading_change_inlier_px = 1.5;  //!< epipolar distance of an inlier, px
-	/** Largest heading change between two images looked for, rad (INI: degrees). */
-	double heading_change_max_turn = 45 * M_PI / 180;
-	/** Nearest depth a scene point may have, m: bounds the parallax that may
-	 * separate a match's bearing change from the heading change. */
-	double heading_change_min_depth = 0.2;
 
 	// Map bounding
 	/** Most landmarks kept (0: no limit); beyond it the least useful go. */
