@@ -101,7 +101,7 @@ MeasurementAccuracy evaluateMeasurements(const std::vector<LandmarkMeasurementRe
 		const bool beyond = beyondThreeSigma(m.z, expected, sigma);
 		const Eigen::Vector3d itsStd = measurementStd(m, sigma);
 		const bool beyondItsNoise = beyondThreeOf(m.z, expected, itsStd);
-		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope, m.Height, m.SlopeStd) == CPreFilter::Verdict::Accepted;
+		const bool ok = filter.check(m.ProjErrRMS, m.NPoints, m.Slope) == CPreFilter::Verdict::Accepted;
 		out.errors.push_back({m, expected, e, ok, beyond, beyondItsNoise});
 		for (ErrorList* list : {&all, &accepted})
 		{

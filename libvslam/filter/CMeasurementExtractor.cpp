@@ -124,9 +124,6 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 				case CPreFilter::Verdict::RejectedSlope:
 					m_stats.rejectedSlope++;
 					continue;
-				case CPreFilter::Verdict::RejectedHeight:
-					m_stats.rejectedHeight++;
-					continue;
 				case CPreFilter::Verdict::Accepted:
 					break;
 			}
@@ -135,8 +132,6 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 			m.key = {LandmarkKind::Pose, v->landmarkID};
 			m.z.resize(3);
 			m.z << v->relPose.x(), v->relPose.y(), v->relPose.phi();
-			m.kidnapEvidence = preFilter.isKidnapEvidence(*v);
-			if (!m.kidnapEvidence) m_stats.visualNoKidnapEvidence++;
 			m.R = MatN::Zero(3, 3);
 			m.R.diagonal() << visual.std_dx * visual.std_dx,
 				visual.std_dy * visual.std_dy, visual.std_dphi * visual.std_dphi;
@@ -153,7 +148,6 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 				const Eigen::Vector2d t(v->relPose.x(), v->relPose.y());
 				m.R.topLeftCorner<2, 2>() += visual.scale_std * visual.scale_std * t * t.transpose();
 			}
-			if (!m.kidnapEvidence) m.R *= std::pow(preFilter.options.above_evidence_noise_scale, 2);
 			out.measurements.push_back(std::move(m));
 		}
 		else if (auto c = std::dynamic_pointer_cast<CObservationLandmarkCreated>(obs))

@@ -53,9 +53,7 @@ struct FrameMeasurements
 struct TExtractionStats
 {
 	uint64_t visualSeen = 0, visualAccepted = 0;
-	uint64_t rejectedProjErrRMS = 0, rejectedNPoints = 0, rejectedSlope = 0, rejectedHeight = 0;
-	/** Accepted, but above evidence_max_Slope: no kidnap evidence. */
-	uint64_t visualNoKidnapEvidence = 0;
+	uint64_t rejectedProjErrRMS = 0, rejectedNPoints = 0, rejectedSlope = 0;
 	uint64_t creationsSeen = 0;
 	uint64_t rangeBearingSeen = 0, rangeBearingAccepted = 0;
 	uint64_t rejectedNoLandmarkID = 0, rejectedRangeLimits = 0;

@@ -76,26 +76,6 @@ TEST(CMeasurementExtractor, VisualMeasurementsGoThroughThePreFilter)
 	EXPECT_EQ(ex.stats().rejectedNPoints, 1u);
 }
 
-TEST(CMeasurementExtractor, MeasurementsAboveTheEvidenceSlopeAreKeptButNoKidnapEvidence)
-{
-	CMeasurementExtractor ex;
-	ex.preFilter.options.evidence_max_Slope = 0.02;
-	mrpt::obs::CSensoryFrame sf;
-	for (const double slope : {0.01, 0.05, 0.2})  // the last beyond max_Slope
-	{
-		auto o = visual(static_cast<int64_t>(100 * slope), 1.0, 40);
-		o->Slope = slope;
-		sf.insert(o);
-	}
-	const FrameMeasurements f = ex.extract(sf);
-	ASSERT_EQ(f.measurements.size(), 2u);
-	EXPECT_TRUE(f.measurements[0].kidnapEvidence);
-	EXPECT_FALSE(f.measurements[1].kidnapEvidence);
-	EXPECT_EQ(ex.stats().visualAccepted, 2u);
-	EXPECT_EQ(ex.stats().visualNoKidnapEvidence, 1u);
-	EXPECT_EQ(ex.stats().rejectedSlope, 1u);
-}
-
 TEST(CMeasurementExtractor, RangeBearingWithIdsSensorPoseAndLimits)
 {
 	CMeasurementExtractor ex;

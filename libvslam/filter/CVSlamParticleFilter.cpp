@@ -219,8 +219,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	double bestFraction = 0;
 	for (const auto& k : known)
 	{
-		if (k.m->kidnapEvidence)
-			evidence.push_back({k, m_index.entry(k.slot).created, k.plausibleFraction >= minFraction});
+		evidence.push_back({k, m_index.entry(k.slot).created, k.plausibleFraction >= minFraction});
 		bestFraction = std::max(bestFraction, k.explainedFraction);
 	}
 	m_lastFrame.explainedFraction = bestFraction;

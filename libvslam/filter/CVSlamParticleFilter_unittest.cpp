@@ -479,27 +479,6 @@ TEST(CVSlamParticleFilter, AKidnapAnotherLandmarkContradictsIsUndone)
 	EXPECT_TRUE(index.entry(*index.find({LandmarkKind::Pose, 5})).suspect);
 }
 
-TEST(CVSlamParticleFilter, MeasurementsThatAreNoKidnapEvidenceDeclareNoKidnap)
-{
-	// The false but consistent recognitions of the test above, which declare
-	// a kidnap there, marked as no kidnap evidence (the pre-filter's
-	// evidence_max_Slope): the cloud stays where it is.
-	for (const bool evidence : {true, false})
-	{
-		auto o = manyParticles(300);
-		o.kidnap.enabled = true;
-		mrpt::random::getRandomGenerator().randomize(12);
-		CVSlamParticleFilter f(o);
-		const se2::Pose l1{2, 0, 0}, elsewhere{-1, 0.5, 0.3};
-		f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark(l1)}});
-		auto falseRecognition = poseMeasurement(1, se2::between(elsewhere, l1));
-		falseRecognition.kidnapEvidence = evidence;
-		for (int t = 1; t <= 8; t++) f.processFrame(frame(t, {falseRecognition}));
-		EXPECT_EQ(f.stats().kidnapsDetected, evidence ? 1u : 0u) << evidence;
-		EXPECT_NEAR(f.meanPose().x, evidence ? elsewhere.x : 0.0, 0.1) << evidence;
-	}
-}
-
 namespace
 {
 /** n particles, odometry with a large turn noise, heading changes fused or

@@ -176,7 +176,7 @@ TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingE
 	EXPECT_NEAR(m->landmarkInRobot.phi(), truth.phi(), 0.02 * kDeg);
 	// The creation views share the camera's height, so the landmark is the
 	// true scene scaled about the camera: the robot's height in it stays 0
-	// (what makes the pre-filter's max_Height independent of the scale).
+	// whatever the landmark's scale.
 	EXPECT_NEAR(m->robotInLandmark.z(), 0, 0.002);
 }
 

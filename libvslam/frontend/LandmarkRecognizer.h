@@ -7,7 +7,7 @@
  * landmark frame's planar pose (dx, dy, dtheta) in the robot frame, with
  * NPoints (inliers), ProjErrRMS (px) and Slope (robot tilt, rad), and the
  * robot's height in the landmark frame (robotInLandmark.z(), 0 on a level
- * floor; the pre-filter's optional max_Height).
+ * floor, in the measurement's Height for diagnosis).
  * It also predicts how uncertain (dx, dy, dtheta) is: the pose covariance
  * of the least-squares solve (reprojection Jacobian, the inliers' own
  * error) carried to the planar measurement. A few points in a small part

@@ -78,10 +78,6 @@ struct LandmarkMeasurement
 	/** Sensor pose on the robot (point kind; identity for pose kind, whose
 	 * measurement is already in the robot frame). */
 	se2::Pose sensorPose{0, 0, 0};
-	/** Whether the kidnap test may count it (as unexplained, or for a
-	 * relocalization hypothesis); the particles are weighted by it either
-	 * way ([vslam_prefilter] evidence_max_Slope). */
-	bool kidnapEvidence = true;
 
 	LandmarkKind kind() const { return key.kind; }
 	int dim() const { return static_cast<int>(z.size()); }

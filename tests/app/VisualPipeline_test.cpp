@@ -435,34 +435,31 @@ TEST(VisualPipeline, AccuracyFollowsThePreFilterOfTheSetOverridesAndChecksTheirK
 	const std::string csv = dir.file("accuracy.csv");
 	const std::string fe = quoted(kBin + "vslam-frontend") + " " + quoted(rawlog) + " " + quoted(dir.file("m.rawlog")) +
 		" --ground-truth " + quoted(truthFile) + " --accuracy-csv " + quoted(csv);
-	// Slope's upper confidence bound: |Slope| + 1 x SlopeStd <= max_Slope.
+	// A Slope bound tight enough to drop some of the measurements the
+	// paper's other two rules accept.
 	const double maxSlope = 0.003;
-	const auto r = runCommand(fe + " --set vslam_prefilter.max_Slope=" + std::to_string(maxSlope) +
-		" --set vslam_prefilter.Slope_std_factor=1");
+	const auto r = runCommand(fe + " --set vslam_prefilter.max_Slope=" + std::to_string(maxSlope));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const AccuracyCsv file = readAccuracyCsv(csv);
-	ASSERT_NE(file.header.find(",Slope_std"), std::string::npos) << file.header;
-	size_t rows = 0, accepted = 0, droppedForTheStdAlone = 0;
+	size_t rows = 0, accepted = 0, droppedForTheSlope = 0;
 	for (const auto& [c, line] : file.rows)
 	{
 		ASSERT_EQ(c.size(), 19u) << line;
-		const double slope = c[10], slopeStd = c[18];
-		EXPECT_GT(slopeStd, 0) << line;  // the front-end predicts it for every measurement
+		const double slope = std::abs(c[10]);
 		const bool paperRules = c[8] <= 3 && c[9] >= 10;
 		// The file rounds Slope to 1e-5 rad: too close to the bound to tell.
-		if (std::abs(slope + slopeStd - maxSlope) < 2e-5) continue;
-		EXPECT_EQ(c[11] != 0, paperRules && slope + slopeStd <= maxSlope) << line;
+		if (std::abs(slope - maxSlope) < 2e-5) continue;
+		EXPECT_EQ(c[11] != 0, paperRules && slope <= maxSlope) << line;
 		rows++, accepted += c[11] != 0;
-		droppedForTheStdAlone += paperRules && slope <= maxSlope && slope + slopeStd > maxSlope;
+		droppedForTheSlope += paperRules && slope > maxSlope;
 	}
-	std::printf("%zu measurements: %zu accepted, %zu dropped for their Slope std alone\n", rows, accepted,
-		droppedForTheStdAlone);
+	std::printf("%zu measurements: %zu accepted, %zu dropped for their Slope\n", rows, accepted, droppedForTheSlope);
 	EXPECT_GT(accepted, 0u);
-	EXPECT_GT(droppedForTheStdAlone, 0u);
+	EXPECT_GT(droppedForTheSlope, 0u);
 
 	// A misspelled pre-filter key is an error before the run, naming it.
-	const auto bad = runCommand(fe + " --set vslam_prefilter.Slope_std_factr=1");
+	const auto bad = runCommand(fe + " --set vslam_prefilter.max_Slop=0.01");
 	EXPECT_NE(bad.exitCode, 0) << bad.output;
-	EXPECT_NE(bad.output.find("'Slope_std_factr'"), std::string::npos) << bad.output;
-	EXPECT_NE(bad.output.find("did you mean 'Slope_std_factor'"), std::string::npos) << bad.output;
+	EXPECT_NE(bad.output.find("'max_Slop'"), std::string::npos) << bad.output;
+	EXPECT_NE(bad.output.find("did you mean 'max_Slope'"), std::string::npos) << bad.output;
 }
