@@ -24,9 +24,6 @@ class CLandmarkIndex
 		mrpt::Clock::time_point created{};
 		/** Measurements of this landmark used by the filter. */
 		uint64_t measurements = 0;
-		/** Consecutive measurements no particle could explain while the
-		 * robot was localized (triggers re-initialization). */
-		uint32_t unexplainedStreak = 0;
 		uint32_t reinitializations = 0;
 		/** Created while the robot was (as found later) kidnapped: its
 		 * estimate is re-initialized at its next sighting. */

@@ -251,26 +251,18 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	{
 		// Measurements no particle could explain, even allowing an odometry
 		// slip, are outliers: not used. Landmarks placed while the robot was
-		// lost are re-initialized, and so is a landmark that keeps being
-		// unexplained while the robot is localized (it was misplaced).
-		const uint32_t limit = m_options.landmarks.reinit_after_unexplained;
+		// lost are re-initialized. (A landmark that stays unexplained while
+		// the robot is localized is not moved: a consistent false
+		// recognition would move a correct landmark.)
 		for (const auto& k : known)
 		{
-			auto& entry = m_index.entry(k.slot);
+			const auto& entry = m_index.entry(k.slot);
 			if (entry.suspect)
 				toReinitialize.emplace_back(k.slot, k.m);
 			else if (k.plausibleFraction >= minFraction)
-			{
 				used.push_back(k);
-				entry.unexplainedStreak = 0;
-			}
 			else
-			{
 				m_stats.rejectedUnexplained++;
-				entry.unexplainedStreak++;
-				if (limit > 0 && entry.unexplainedStreak >= limit && m_kidnap.localized())
-					toReinitialize.emplace_back(k.slot, k.m);
-			}
 		}
 		if (used.empty())
 			sampleMotionOnly(mp);
@@ -365,7 +357,6 @@ void CVSlamParticleFilter::switchToRelocalizationHypothesis(mrpt::Clock::time_po
 	// pose the robot did not have; streaks so far were the kidnap's doing.
 	m_lastKidnap = LastKidnap{t, {}};
 	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
-		e.unexplainedStreak = 0;
 		if (!m_kidnap.anchored(e.created) && !e.suspect)
 		{
 			e.suspect = true;
@@ -386,7 +377,6 @@ void CVSlamParticleFilter::revertLastKidnap()
 	for (const auto& key : m_lastKidnap->markedSuspect)
 		if (const auto slot = m_index.find(key)) m_index.entry(*slot).suspect = false;
 	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
-		e.unexplainedStreak = 0;
 		if (e.created >= m_lastKidnap->time) e.suspect = true;
 	});
 	m_lastKidnap.reset();
@@ -599,9 +589,11 @@ void CVSlamParticleFilter::updateLoopClosureGraph(
 void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction& c)
 {
 	// Every particle takes the solution's map (with the best particle's
-	// landmark covariances), and the cloud moves rigidly so that its anchor
-	// (cloud_anchor: the best particle, or the weighted mean) sits on the
-	// solution's current pose: the spread and the weights stay as they are.
+	// landmark covariances), and the cloud moves rigidly so that its
+	// weighted mean (the online estimate) sits on the solution's current
+	// pose: the spread and the weights stay as they are. (Moving the best
+	// particle there instead carries the mean past the solution by the best
+	// particle's offset from it.)
 	m_stats.loopClosures++;
 	m_stats.loopClosureEdgesLeftOut = c.leftOutEdges;
 	const CVSlamParticle& best = m_particles[bestParticleIndex()].d;
@@ -612,8 +604,7 @@ void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction
 		e.mean = se2::toVector(pose);
 		bank.set(slot, e);
 	}
-	const se2::Pose anchor =
-		m_options.loopClosure.cloud_anchor == "mean" ? cloudMean(normalizedLinearWeights()) : best.pose;
+	const se2::Pose anchor = cloudMean(normalizedLinearWeights());
 	const se2::Pose shift = se2::compose(c.keyframe, se2::inverse(anchor));
 	for (auto& p : m_particles)
 	{
@@ -628,7 +619,6 @@ void CVSlamParticleFilter::reinitializeLandmark(
 	auto& entry = m_index.entry(slot);
 	// Re-placed from the current belief: young again for kidnap evidence.
 	entry.created = t;
-	entry.unexplainedStreak = 0;
 	entry.suspect = false;
 	entry.reinitializations++;
 	m_stats.landmarksReinitialized++;

@@ -72,9 +72,6 @@ void TLandmarkOptions::loadFromConfigFile(
 	init_std_xy = readDouble(c, s, "init_std_xy", init_std_xy, Range::nonNegative());
 	init_std_phi = readDegreesAsRadians(
 		c, s, "init_std_phi_deg", init_std_phi, Range::nonNegative());
-	reinit_after_unexplained = static_cast<uint32_t>(readInt(
-		c, s, "reinit_after_unexplained", reinit_after_unexplained,
-		Range::closed(0, 1e6)));
 	init_include_pose_uncertainty =
 		readBool(c, s, "init_include_pose_uncertainty", init_include_pose_uncertainty);
 	anchor_first_landmark = readBool(c, s, "anchor_first_landmark", anchor_first_landmark);
@@ -87,8 +84,6 @@ void TLandmarkOptions::saveToConfigFile(
 		"Extra std of a new visual landmark's frame vs. the creating pose [m]");
 	c.write(s, "init_std_phi_deg", init_std_phi * 180 / M_PI, 25, 12,
 		"Extra heading std of a new visual landmark's frame [deg]");
-	c.write(s, "reinit_after_unexplained", static_cast<int>(reinit_after_unexplained), 25, 12,
-		"Re-initialize a landmark after this many consecutive unexplained measurements while localized (0: never)");
 	c.write(s, "init_include_pose_uncertainty", init_include_pose_uncertainty, 25, 12,
 		"Add the particle cloud's pose covariance to a new landmark's covariance");
 	c.write(s, "anchor_first_landmark", anchor_first_landmark, 25, 12,

@@ -68,11 +68,6 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 	 * robot pose it is created at (front-end reconstruction error). */
 	double init_std_xy = 0.03;  //!< m
 	double init_std_phi = 1.0 * M_PI / 180;  //!< rad (INI: degrees)
-	/** Re-initialize a landmark after this many consecutive measurements
-	 * that no particle explains while the robot is localized (0: never).
-	 * Off by default: a landmark recognized falsely but consistently would be
-	 * moved to where the false recognitions put it. */
-	uint32_t reinit_after_unexplained = 0;
 	/** Add the particle cloud's pose covariance at creation (propagated to
 	 * the landmark) to a new landmark's covariance. Off (FastSLAM proper):
 	 * the particles' own poses already represent where the robot was, and a

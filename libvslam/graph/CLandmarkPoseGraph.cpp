@@ -25,13 +25,10 @@ void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
 	min_gap_s = readDouble(c, s, "min_gap_s", min_gap_s, Range::nonNegative());
 	edge_gate_probability = readDouble(
 		c, s, "edge_gate_probability", edge_gate_probability, Range{0, 1, false, false});
-	huber_threshold =
-		readDouble(c, s, "huber_threshold", huber_threshold, Range::nonNegative());
 	max_iterations = static_cast<uint32_t>(
 		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
 	max_keyframes = static_cast<uint32_t>(
 		readInt(c, s, "max_keyframes", max_keyframes, Range::closed(0, 1e8)));
-	cloud_anchor = readWord(c, s, "cloud_anchor", cloud_anchor, {"best_particle", "mean"});
 }
 
 void CLandmarkPoseGraph::TOptions::saveToConfigFile(
@@ -43,14 +40,10 @@ void CLandmarkPoseGraph::TOptions::saveToConfigFile(
 		"A landmark measured again after this long [s] closes a loop");
 	c.write(s, "edge_gate_probability", edge_gate_probability, 25, 12,
 		"Chi-square gate that keeps a measurement edge after an optimization");
-	c.write(s, "huber_threshold", huber_threshold, 25, 12,
-		"Huber threshold on the Mahalanobis distance of a measurement edge (0: least squares)");
 	c.write(s, "max_iterations", static_cast<int>(max_iterations), 25, 12,
 		"Levenberg-Marquardt iterations per optimization");
 	c.write(s, "max_keyframes", static_cast<int>(max_keyframes), 25, 12,
 		"Keyframes kept at most; beyond, every second one of the older half goes (0: no limit)");
-	c.write(s, "cloud_anchor", cloud_anchor, 25, 12,
-		"The pose moved onto the solution's current keyframe, the cloud with it: best_particle | mean");
 }
 
 CLandmarkPoseGraph::CLandmarkPoseGraph(const TOptions& options, const se2::Pose& start)
@@ -79,7 +72,6 @@ void CLandmarkPoseGraph::addEdge(
 	e.to = to;
 	e.z = z;
 	e.information = (cov + kCovarianceFloor * Eigen::Matrix3d::Identity()).inverse();
-	if (kind == EdgeKind::Measurement) e.huber = m_options.huber_threshold;
 	m_edges.push_back(e);
 	m_edgeStates.push_back({kind, true});
 }

@@ -59,20 +59,11 @@ class CLandmarkPoseGraph
 		/** Probability mass of the chi-square gate that keeps a measurement
 		 * edge after an optimization, (0,1). */
 		double edge_gate_probability = 0.999;
-		/** Huber threshold on a measurement edge's Mahalanobis distance:
-		 * beyond it the edge's cost grows linearly (0: least squares). */
-		double huber_threshold = 0;
 		/** Levenberg-Marquardt iterations per optimization. */
 		uint32_t max_iterations = 50;
 		/** Keyframes kept at most: beyond, the older half is thinned
 		 * (0: no limit). */
 		uint32_t max_keyframes = 2000;
-		/** Which pose of the cloud is moved onto the solution's current
-		 * keyframe, the cloud rigidly with it: "mean" (the cloud's weighted
-		 * mean, the online estimate's) or "best_particle" (the highest
-		 * weight, which carries the mean past the solution by the best
-		 * particle's offset from it). */
-		std::string cloud_anchor = "mean";
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
