@@ -60,9 +60,7 @@ Eigen::Vector3d measurementStd(const LandmarkMeasurementRecord& m, const CMeasur
 {
 	const double k2 = sigma.predicted_cov_scale * sigma.predicted_cov_scale;
 	const auto sq = [](double v) { return v * v; };
-	const double s2 = sigma.scale_std * sigma.scale_std;
-	return {std::sqrt(sq(sigma.std_dx) + k2 * sq(m.predictedStdX) + s2 * sq(m.z.x)),
-		std::sqrt(sq(sigma.std_dy) + k2 * sq(m.predictedStdY) + s2 * sq(m.z.y)),
+	return {std::sqrt(sq(sigma.std_dx) + k2 * sq(m.predictedStdX)), std::sqrt(sq(sigma.std_dy) + k2 * sq(m.predictedStdY)),
 		std::sqrt(sq(sigma.std_dphi) + k2 * sq(m.predictedStdPhi))};
 }
 

@@ -85,7 +85,7 @@ bool beyondThreeSigma(const se2::Pose& z, const se2::Pose& truth, const CMeasure
 
 /** The std of dx, dy and dtheta the filter gives measurement m: the square
  * root of the diagonal of Sigma_vis + predicted_cov_scale^2 x its
- * predicted covariance + scale_std^2 t t^T (CMeasurementExtractor::extract). */
+ * predicted covariance (CMeasurementExtractor::extract). */
 Eigen::Vector3d measurementStd(const LandmarkMeasurementRecord& m, const CMeasurementExtractor::TVisualOptions& sigma);
 
 /** e^T D^-1 e, e the error of z against the truth, D = diag(std^2). */

@@ -117,21 +117,6 @@ TEST(MeasurementAccuracy, ItsNoiseIsSigmaVisWidenedByTheScaledPredictedCovarianc
 	EXPECT_TRUE(beyondThreeSigmaOfItsNoise(m, truth, weighted));
 }
 
-TEST(MeasurementAccuracy, ItsNoiseGrowsWithTheMeasuredTranslationByTheScaleStd)
-{
-	const auto m = record(0, 1, {2.0, -1.0, 0.3});
-	auto o = sigmaVis(0.1, 2.0);
-	o.scale_std = 0.1;
-	const Eigen::Vector3d std = measurementStd(m, o);
-	EXPECT_NEAR(std[0], std::sqrt(0.01 + 0.01 * 4.0), 1e-12);
-	EXPECT_NEAR(std[1], std::sqrt(0.01 + 0.01 * 1.0), 1e-12);
-	EXPECT_NEAR(std[2], 2.0 * M_PI / 180, 1e-12);
-	// 0.6 m off in x: beyond 3 x 0.1 m of Sigma_vis, within 3 x 0.224 m of its noise.
-	const se2::Pose truth{1.4, -1.0, 0.3};
-	EXPECT_TRUE(beyondThreeSigma(m.z, truth, o));
-	EXPECT_FALSE(beyondThreeSigmaOfItsNoise(m, truth, o));
-}
-
 TEST(MeasurementAccuracy, CountsAllAndAcceptedAndThoseWithoutTruth)
 {
 	const Trajectory truth = drivingAndTurning();

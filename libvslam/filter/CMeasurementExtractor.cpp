@@ -17,11 +17,8 @@ void CMeasurementExtractor::TVisualOptions::loadFromConfigFile(
 	std_dx = readDouble(c, s, "std_dx", std_dx, Range::positive());
 	std_dy = readDouble(c, s, "std_dy", std_dy, Range::positive());
 	std_dphi = readDegreesAsRadians(c, s, "std_dphi_deg", std_dphi, Range::positive());
-	time_jitter_std =
-		readDouble(c, s, "time_jitter_std", time_jitter_std, Range::nonNegative());
 	predicted_cov_scale =
 		readDouble(c, s, "predicted_cov_scale", predicted_cov_scale, Range::nonNegative());
-	scale_std = readDouble(c, s, "scale_std", scale_std, Range::closed(0, 1));
 }
 
 void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
@@ -31,12 +28,8 @@ void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
 	c.write(s, "std_dy", std_dy, 25, 12, "Visual measurement noise, dy [m] (paper: 0.09)");
 	c.write(s, "std_dphi_deg", std_dphi * 180 / M_PI, 25, 12,
 		"Visual measurement noise, dtheta [deg] (paper: 0.0019 rad^2 = 2.4975 deg)");
-	c.write(s, "time_jitter_std", time_jitter_std, 25, 12,
-		"Timestamp uncertainty of images vs odometry [s]: noise grows with speed and turn rate");
 	c.write(s, "predicted_cov_scale", predicted_cov_scale, 25, 12,
 		"Add this factor^2 x each measurement's predicted covariance to Sigma_vis (0: Sigma_vis alone, the paper)");
-	c.write(s, "scale_std", scale_std, 25, 12,
-		"Std of the landmark's scale as a share: adds scale_std^2 t t^T to the (dx, dy) noise (0: none, the paper)");
 }
 
 void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
@@ -47,8 +40,6 @@ void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
 		c, s, "std_bearing_deg", std_bearing, Range::nonNegative());
 	min_range = readDouble(c, s, "min_range", min_range, Range::nonNegative());
 	max_range = readDouble(c, s, "max_range", max_range, Range::nonNegative());
-	time_jitter_std =
-		readDouble(c, s, "time_jitter_std", time_jitter_std, Range::nonNegative());
 }
 
 void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
@@ -60,8 +51,6 @@ void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
 		"Bearing noise [deg]; 0: each observation's sensor_std_yaw");
 	c.write(s, "min_range", min_range, 25, 12, "Ignore ranges below this [m]");
 	c.write(s, "max_range", max_range, 25, 12, "Ignore ranges above this [m] (0: no limit)");
-	c.write(s, "time_jitter_std", time_jitter_std, 25, 12,
-		"Timestamp uncertainty of measurements vs odometry [s]: noise grows with speed and turn rate");
 }
 
 void CMeasurementExtractor::THeadingChangeOptions::loadFromConfigFile(
@@ -142,11 +131,6 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 					throw InputError("visual measurement of landmark " + std::to_string(v->landmarkID) +
 						" has a predicted covariance that is not finite or has a negative variance");
 				m.R += visual.predicted_cov_scale * visual.predicted_cov_scale * P;
-			}
-			if (visual.scale_std > 0)
-			{
-				const Eigen::Vector2d t(v->relPose.x(), v->relPose.y());
-				m.R.topLeftCorner<2, 2>() += visual.scale_std * visual.scale_std * t * t.transpose();
 			}
 			out.measurements.push_back(std::move(m));
 		}

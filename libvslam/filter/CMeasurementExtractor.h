@@ -72,8 +72,6 @@ class CMeasurementExtractor
 		double std_dx = 0.09;  //!< m
 		double std_dy = 0.09;  //!< m
 		double std_dphi = std::sqrt(0.0019);  //!< rad (INI: degrees)
-		/** Timestamp uncertainty of the images against odometry (s). */
-		double time_jitter_std = 0;
 		/** Each measurement's noise is Sigma_vis plus this factor squared
 		 * times the covariance its pose solve predicts (relPoseCov, where
 		 * the rawlog has one): a measurement from a few points in a small
@@ -81,12 +79,6 @@ class CMeasurementExtractor
 		 * pixel error, not the landmark's own, hence a factor. 0: Sigma_vis
 		 * alone (the paper). */
 		double predicted_cov_scale = 0;
-		/** A landmark's scale is known only to a share (the odometry
-		 * baseline it was built from), and a scale error s moves the
-		 * measured translation t by s t: this std of s adds
-		 * scale_std^2 t t^T to the (dx, dy) noise, so measurements from
-		 * afar count for less. 0: not modelled (the paper). */
-		double scale_std = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -105,8 +97,6 @@ class CMeasurementExtractor
 		double std_bearing = 0;  //!< rad (INI: degrees)
 		double min_range = 0;  //!< m
 		double max_range = 0;  //!< m, 0: no limit
-		/** Timestamp uncertainty of the measurements against odometry (s). */
-		double time_jitter_std = 0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,

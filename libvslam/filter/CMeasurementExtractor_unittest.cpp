@@ -130,33 +130,6 @@ TEST(CMeasurementExtractor, PredictedCovarianceScaledAddsToSigmaVisOnlyWhenAsked
 	EXPECT_THROW(scaled.extract(sf), InputError);
 }
 
-TEST(CMeasurementExtractor, ScaleStdAddsNoiseAlongTheMeasuredTranslation)
-{
-	mrpt::obs::CSensoryFrame sf;
-	sf.insert(visual(1, 1.0, 40));  // t = (1.0, 0.5)
-	auto far = visual(2, 1.0, 40);
-	far->relPose = mrpt::poses::CPose2D(3.0, 0.0, 0.0);
-	sf.insert(far);
-
-	CMeasurementExtractor ex;
-	ex.visual.scale_std = 0.1;
-	const auto m = ex.extract(sf).measurements;
-	ASSERT_EQ(m.size(), 2u);
-	const double s2 = 0.01, vis2 = 0.09 * 0.09;
-	EXPECT_NEAR(m[0].R(0, 0), vis2 + s2 * 1.0, 1e-12);
-	EXPECT_NEAR(m[0].R(1, 1), vis2 + s2 * 0.25, 1e-12);
-	EXPECT_NEAR(m[0].R(0, 1), s2 * 0.5, 1e-12);
-	EXPECT_NEAR(m[0].R(1, 0), s2 * 0.5, 1e-12);
-	EXPECT_NEAR(m[0].R(2, 2), 0.0019, 1e-9);  // the heading is not scaled
-	// Three times as far along x: nine times the added variance along x, none across.
-	EXPECT_NEAR(m[1].R(0, 0), vis2 + s2 * 9.0, 1e-12);
-	EXPECT_NEAR(m[1].R(1, 1), vis2, 1e-12);
-	EXPECT_NEAR(m[1].R(0, 1), 0, 1e-12);
-
-	CMeasurementExtractor paper;
-	EXPECT_NEAR(paper.extract(sf).measurements[1].R(0, 0), vis2, 1e-12);
-}
-
 TEST(CMeasurementExtractor, NonFiniteInputIsAnInputError)
 {
 	CMeasurementExtractor ex;

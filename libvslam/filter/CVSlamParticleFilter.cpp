@@ -51,7 +51,6 @@ void CVSlamParticleFilter::reset()
 	}
 	m_index = CLandmarkIndex();
 	m_odometry = COdometryAccumulator();
-	m_lastFrameTime.reset();
 	m_lastKidnap.reset();
 	m_kidnap = CKidnapDetector(m_options.kidnap);
 	m_stats = TFilterStats();
@@ -123,9 +122,7 @@ void CVSlamParticleFilter::processFrame(const FrameMeasurements& input)
 	// next, at this frame or a later one.
 	if (input.headingChange && m_options.headingChange.enabled) fuseHeadingChange(*input.headingChange);
 	if (input.empty()) return;
-	FrameMeasurements frame = input;
-	frame.measurements = withTimeJitter(input);
-	m_lastFrameTime = input.timestamp;
+	const FrameMeasurements& frame = input;
 	const auto& pf = m_options.pf;
 	if (pf.measurement_processing == MeasurementProcessing::Joint ||
 		frame.measurements.size() <= 1)
@@ -167,26 +164,6 @@ void CVSlamParticleFilter::fuseHeadingChange(const HeadingChangeMeasurement& h)
 // --------------------------------------------------------------------------
 // One update
 // --------------------------------------------------------------------------
-std::vector<LandmarkMeasurement> CVSlamParticleFilter::withTimeJitter(
-	const FrameMeasurements& frame) const
-{
-	std::vector<LandmarkMeasurement> out = frame.measurements;
-	if (!m_lastFrameTime || frame.timestamp <= *m_lastFrameTime || m_odometry.empty())
-		return out;
-	const double dt = std::chrono::duration<double>(frame.timestamp - *m_lastFrameTime).count();
-	const se2::Pose& u = m_odometry.mean();
-	const double v = std::hypot(u.x, u.y) / dt, omega = u.phi / dt;
-	for (auto& m : out)
-	{
-		const double jitter = m.kind() == LandmarkKind::Pose
-			? m_options.visual.time_jitter_std
-			: m_options.rangeBearing.time_jitter_std;
-		if (jitter > 0)
-			m.R += landmarkModel(m.kind()).timeJitterCovariance(m, v, omega, jitter);
-	}
-	return out;
-}
-
 void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 {
 	m_stats.frames++;

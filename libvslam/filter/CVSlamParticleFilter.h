@@ -171,7 +171,6 @@ class CVSlamParticleFilter
 	COdometryAccumulator m_odometry;
 	TFilterStats m_stats;
 	TFrameReport m_lastFrame;
-	std::optional<mrpt::Clock::time_point> m_lastFrameTime;
 	std::vector<PoseGaussianProposal> m_proposalBuffer;  //!< reused per frame
 	mrpt::random::CRandomGenerator& m_rng;
 	std::string m_inputError;  //!< see takeInputError()
@@ -190,8 +189,6 @@ class CVSlamParticleFilter
 	void updateWithFrame(const FrameMeasurements& frame);
 	/** Fuses a heading change into the pending odometry (COdometryAccumulator). */
 	void fuseHeadingChange(const HeadingChangeMeasurement& h);
-	/** The frame's measurements with the timestamp-jitter noise added. */
-	std::vector<LandmarkMeasurement> withTimeJitter(const FrameMeasurements& frame) const;
 	void moveParticlesTo(const std::vector<se2::Pose>& poses);
 	void switchToRelocalizationHypothesis(mrpt::Clock::time_point t);
 	void revertLastKidnap();

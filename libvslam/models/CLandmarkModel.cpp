@@ -47,19 +47,6 @@ LandmarkEstimate CLandmarkModel::initialize(
 	return l;
 }
 
-MatN CLandmarkModel::timeJitterCovariance(
-	const LandmarkMeasurement& m, double v, double omega, double jitterStd) const
-{
-	// The landmark as seen in the robot frame, then h's sensitivity to a
-	// small motion of the robot frame.
-	const se2::Pose origin{0, 0, 0};
-	const LandmarkEstimate local = initializeFromMeasurement(origin, m);
-	const MatN H = predict(origin, local, m).H_robot;
-	// One timing error moves the robot along one direction: rank one.
-	const VecN dz = H * Eigen::Vector3d(v, 0, omega);
-	return dz * dz.transpose() * (jitterStd * jitterStd);
-}
-
 // --------------------------------------------------------------------------
 // Pose landmarks
 // --------------------------------------------------------------------------

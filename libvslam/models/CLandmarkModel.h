@@ -42,14 +42,6 @@ class CLandmarkModel
 		const se2::Pose& s, const LandmarkMeasurement& m,
 		const Eigen::Matrix3d* robotPoseCov = nullptr) const;
 
-	/** Covariance that a timestamp error (std jitterStd seconds) adds to
-	 * measurement m while the robot moves at speed v and turn rate omega:
-	 * an error dt displaces the robot by (v dt, 0, omega dt) in its own
-	 * frame, so the added covariance is (H d)(H d)^T jitterStd^2 with
-	 * d = (v, 0, omega) and H = d h / d s at the robot frame. */
-	MatN timeJitterCovariance(
-		const LandmarkMeasurement& m, double v, double omega, double jitterStd) const;
-
 	/** d (landmark state) / d s of the inverse model at s, z. */
 	virtual MatN inverseJacobianRobot(
 		const se2::Pose& s, const LandmarkMeasurement& m) const = 0;

@@ -225,25 +225,3 @@ TEST(CLandmarkModel, InverseModelJacobiansMatchNumerical)
 	}
 }
 
-TEST(CLandmarkModel, TimeJitterCovarianceIsTheEffectOfAShiftedRobot)
-{
-	// A timestamp error dt moves the robot by (v dt, 0, w dt); compare the
-	// analytic covariance with the numerical effect of that motion.
-	const double v = 0.3, w = 0.8, jitter = 0.1;
-	for (LandmarkKind kind : {LandmarkKind::Pose, LandmarkKind::Point})
-	{
-		const auto& model = landmarkModel(kind);
-		const auto m = kind == LandmarkKind::Pose ? poseMeasurement({2.0, 0.5, 0.3})
-												  : pointMeasurement(3.0, 0.2, {0.1, 0, 0});
-		const LandmarkEstimate local = model.initialize({0, 0, 0}, m);
-		const auto h = [&](double dt) {
-			return Eigen::VectorXd(model.predict({v * dt, 0, w * dt}, local, m).zhat);
-		};
-		const double eps = 1e-6;
-		const Eigen::VectorXd dh = (h(eps) - h(-eps)) / (2 * eps);
-		const Eigen::MatrixXd expected = dh * dh.transpose() * jitter * jitter;
-		EXPECT_TRUE(Eigen::MatrixXd(model.timeJitterCovariance(m, v, w, jitter))
-						.isApprox(expected, 1e-5))
-			<< toString(kind);
-	}
-}
