@@ -517,11 +517,10 @@ void CVSlamParticleFilter::createLandmark(
 {
 	m_index.add(key, t);
 	const auto& model = landmarkModel(key.kind);
-	const std::optional<Eigen::Matrix3d> cloud = m_options.landmarks.init_include_pose_uncertainty
-		? std::optional<Eigen::Matrix3d>(poseCovariance())
-		: std::nullopt;
-	for (auto& p : m_particles)
-		p.d.bank.push_back(model.initialize(p.d.pose, rel, cloud ? &*cloud : nullptr));
+	// FastSLAM proper: each particle's own pose carries where the robot was;
+	// widening every landmark by the whole cloud's spread would let loop
+	// closures move landmarks instead of weighing particles.
+	for (auto& p : m_particles) p.d.bank.push_back(model.initialize(p.d.pose, rel));
 }
 
 void CVSlamParticleFilter::anchorMapFrame()
@@ -600,11 +599,7 @@ void CVSlamParticleFilter::reinitializeLandmark(
 	entry.reinitializations++;
 	m_stats.landmarksReinitialized++;
 	const auto& model = landmarkModel(entry.key.kind);
-	const std::optional<Eigen::Matrix3d> cloud = m_options.landmarks.init_include_pose_uncertainty
-		? std::optional<Eigen::Matrix3d>(poseCovariance())
-		: std::nullopt;
-	for (auto& p : m_particles)
-		p.d.bank.set(slot, model.initialize(p.d.pose, m, cloud ? &*cloud : nullptr));
+	for (auto& p : m_particles) p.d.bank.set(slot, model.initialize(p.d.pose, m));
 }
 
 // --------------------------------------------------------------------------

@@ -183,7 +183,6 @@ TEST(CVSlamParticleFilter, NewLandmarksStartFromEachParticlesOwnPose)
 {
 	auto o = spreadCloud(50, 0.5, 0.3, false);
 	o.landmarks.init_std_xy = 0.01;
-	o.landmarks.init_include_pose_uncertainty = false;
 	mrpt::random::getRandomGenerator().randomize(6);
 	CVSlamParticleFilter f(o);
 	f.processFrame(frame(0, {}, {creation(42)}));
@@ -222,20 +221,6 @@ TEST(CVSlamParticleFilter, TheFirstLandmarkAnchorsTheMapAtTheCloudsMean)
 	EXPECT_GT(spread(2, 2), 1e-4);
 	for (size_t i = 0; i < f.particlesCount(); i++)
 		EXPECT_TRUE(f.particle(i).bank[1].mean.isApprox(se2::toVector(f.particle(i).pose), 1e-12));
-}
-
-TEST(CVSlamParticleFilter, NewLandmarksCarryThePoseUncertaintyOfTheCloud)
-{
-	auto o = spreadCloud(2000, 0.3, 0, false);
-	o.landmarks.init_include_pose_uncertainty = true;
-	mrpt::random::getRandomGenerator().randomize(6);
-	CVSlamParticleFilter f(o);
-	const Eigen::Matrix3d cloud = f.poseCovariance();
-	f.processFrame(frame(0, {}, {creation(42)}));
-	const auto& l = f.particle(0).bank[0];
-	// Landmark at the robot pose: its covariance adds the cloud's (J = I).
-	EXPECT_NEAR(l.cov(0, 0), cloud(0, 0) + o.landmarks.init_std_xy * o.landmarks.init_std_xy, 1e-9);
-	EXPECT_GT(l.cov(0, 0), 0.08);
 }
 
 TEST(CVSlamParticleFilter, OdometryIsSampledOncePerAccumulatedIncrement)

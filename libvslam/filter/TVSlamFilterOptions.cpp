@@ -72,8 +72,6 @@ void TLandmarkOptions::loadFromConfigFile(
 	init_std_xy = readDouble(c, s, "init_std_xy", init_std_xy, Range::nonNegative());
 	init_std_phi = readDegreesAsRadians(
 		c, s, "init_std_phi_deg", init_std_phi, Range::nonNegative());
-	init_include_pose_uncertainty =
-		readBool(c, s, "init_include_pose_uncertainty", init_include_pose_uncertainty);
 	anchor_first_landmark = readBool(c, s, "anchor_first_landmark", anchor_first_landmark);
 }
 
@@ -84,8 +82,6 @@ void TLandmarkOptions::saveToConfigFile(
 		"Extra std of a new visual landmark's frame vs. the creating pose [m]");
 	c.write(s, "init_std_phi_deg", init_std_phi * 180 / M_PI, 25, 12,
 		"Extra heading std of a new visual landmark's frame [deg]");
-	c.write(s, "init_include_pose_uncertainty", init_include_pose_uncertainty, 25, 12,
-		"Add the particle cloud's pose covariance to a new landmark's covariance");
 	c.write(s, "anchor_first_landmark", anchor_first_landmark, 25, 12,
 		"Collapse the particle cloud onto its mean when the first landmark is created (fixes the map frame)");
 }

@@ -68,15 +68,6 @@ struct TLandmarkOptions : public mrpt::config::CLoadableOptions
 	 * robot pose it is created at (front-end reconstruction error). */
 	double init_std_xy = 0.03;  //!< m
 	double init_std_phi = 1.0 * M_PI / 180;  //!< rad (INI: degrees)
-	/** Add the particle cloud's pose covariance at creation (propagated to
-	 * the landmark) to a new landmark's covariance. Off (FastSLAM proper):
-	 * the particles' own poses already represent where the robot was, and a
-	 * landmark widened by the cloud absorbs the loop closures that should
-	 * tell good particles from bad ones. On: the
-	 * uncertainty survives resampling's loss of path diversity in the
-	 * landmark, so a later sighting corrects the landmark instead of pulling
-	 * the robot. */
-	bool init_include_pose_uncertainty = false;
 	/** Before the first landmark is created, collapse the particle cloud
 	 * onto its weighted mean, so the map's frame is the best estimate of the
 	 * robot's pose at that time instead of the pose of whichever particle's
