@@ -16,6 +16,8 @@ constexpr double kLostOdometryVarXY = 1e2;
 constexpr double kLostOdometryVarPhi = 10;
 /** Keeps a near-singular covariance (a robot standing still) invertible. */
 constexpr double kCovarianceFloor = 1e-6;
+/** Levenberg-Marquardt iterations per solve: the graphs converge in far fewer. */
+constexpr uint32_t kMaxIterations = 50;
 }  // namespace
 
 void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
@@ -25,8 +27,6 @@ void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
 	min_gap_s = readDouble(c, s, "min_gap_s", min_gap_s, Range::nonNegative());
 	edge_gate_probability = readDouble(
 		c, s, "edge_gate_probability", edge_gate_probability, Range{0, 1, false, false});
-	max_iterations = static_cast<uint32_t>(
-		readInt(c, s, "max_iterations", max_iterations, Range::closed(1, 10000)));
 	max_keyframes = static_cast<uint32_t>(
 		readInt(c, s, "max_keyframes", max_keyframes, Range::closed(0, 1e8)));
 }
@@ -40,8 +40,6 @@ void CLandmarkPoseGraph::TOptions::saveToConfigFile(
 		"A landmark measured again after this long [s] closes a loop");
 	c.write(s, "edge_gate_probability", edge_gate_probability, 25, 12,
 		"Chi-square gate that keeps a measurement edge after an optimization");
-	c.write(s, "max_iterations", static_cast<int>(max_iterations), 25, 12,
-		"Levenberg-Marquardt iterations per optimization");
 	c.write(s, "max_keyframes", static_cast<int>(max_keyframes), 25, 12,
 		"Keyframes kept at most; beyond, every second one of the older half goes (0: no limit)");
 }
@@ -160,7 +158,7 @@ CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
 		active.clear();
 		for (size_t k = 0; k < m_edges.size(); k++)
 			if (m_edgeStates[k].active) active.push_back(m_edges[k]);
-		out.chi2 = solvePoseGraph(m_nodes, active, 0, m_options.max_iterations).finalCost;
+		out.chi2 = solvePoseGraph(m_nodes, active, 0, kMaxIterations).finalCost;
 		if (revision == kMaxRevisions || !reviseOutliers()) break;
 	}
 	out.leftOutEdges = static_cast<size_t>(std::count_if(

@@ -59,8 +59,6 @@ class CLandmarkPoseGraph
 		/** Probability mass of the chi-square gate that keeps a measurement
 		 * edge after an optimization, (0,1). */
 		double edge_gate_probability = 0.999;
-		/** Levenberg-Marquardt iterations per optimization. */
-		uint32_t max_iterations = 50;
 		/** Keyframes kept at most: beyond, the older half is thinned
 		 * (0: no limit). */
 		uint32_t max_keyframes = 2000;

@@ -244,7 +244,6 @@ TEST(CLandmarkPoseGraph, OptionsRoundTripThroughTheIni)
 	o.enabled = false;
 	o.min_gap_s = 12.5;
 	o.edge_gate_probability = 0.99;
-	o.max_iterations = 7;
 	o.max_keyframes = 321;
 	mrpt::config::CConfigFileMemory written;
 	o.saveToConfigFile(written, o.kSection);
@@ -256,6 +255,5 @@ TEST(CLandmarkPoseGraph, OptionsRoundTripThroughTheIni)
 	EXPECT_EQ(back.enabled, false);
 	EXPECT_DOUBLE_EQ(back.min_gap_s, 12.5);
 	EXPECT_DOUBLE_EQ(back.edge_gate_probability, 0.99);
-	EXPECT_EQ(back.max_iterations, 7u);
 	EXPECT_EQ(back.max_keyframes, 321u);
 }

@@ -13,9 +13,6 @@ void CMotionModel::TOptions::loadFromConfigFile(
 	sigma_R = readDouble(c, s, "sigma_R", sigma_R, Range::nonNegative());
 	sigma_R_per_meter = readDouble(
 		c, s, "sigma_R_per_meter", sigma_R_per_meter, Range::nonNegative());
-	min_std_xy = readDouble(c, s, "min_std_xy", min_std_xy, Range::positive());
-	min_std_phi = readDegreesAsRadians(
-		c, s, "min_std_phi_deg", min_std_phi, Range::positive());
 	slip_probability =
 		readDouble(c, s, "slip_probability", slip_probability, Range::halfOpen(0, 1));
 	slip_std_xy = readDouble(c, s, "slip_std_xy", slip_std_xy, Range::positive());
@@ -32,10 +29,6 @@ void CMotionModel::TOptions::saveToConfigFile(
 		"Rotational odometry noise [rad/sqrt(rad)]: var(th)+=sigma_R^2*|dth|");
 	c.write(s, "sigma_R_per_meter", sigma_R_per_meter, 25, 12,
 		"Heading drift per distance [rad/sqrt(m)]: var(th)+=s^2*d (0: paper)");
-	c.write(s, "min_std_xy", min_std_xy, 25, 12,
-		"Floor on the xy noise of each sampled increment [m]");
-	c.write(s, "min_std_phi_deg", min_std_phi * 180.0 / M_PI, 25, 12,
-		"Floor on the heading noise of each sampled increment [deg]");
 	c.write(s, "slip_probability", slip_probability, 25, 12,
 		"Probability that one update's odometry failed (slip, bump), [0,1)");
 	c.write(s, "slip_std_xy", slip_std_xy, 25, 12, "Position error of such a failure [m]");
@@ -61,7 +54,8 @@ Eigen::Matrix3d CMotionModel::slipCovariance() const
 
 Eigen::Matrix3d CMotionModel::covarianceFloor() const
 {
-	const double a = options.min_std_xy * options.min_std_xy;
-	const double b = options.min_std_phi * options.min_std_phi;
+	constexpr double kMinStdXY = 1e-4, kMinStdPhi = 1e-4;  // m, rad
+	const double a = kMinStdXY * kMinStdXY;
+	const double b = kMinStdPhi * kMinStdPhi;
 	return Eigen::Vector3d(a, a, b).asDiagonal();
 }

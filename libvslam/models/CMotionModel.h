@@ -41,10 +41,6 @@ class CMotionModel
 		double sigma_R = 0.1;
 		/** Heading drift per distance, rad per sqrt(m) (0: paper model). */
 		double sigma_R_per_meter = 0.02;
-		/** Tiny floor added to every sampled increment's covariance, so the
-		 * proposal density is defined when the robot stands still. */
-		double min_std_xy = 1e-4;
-		double min_std_phi = 1e-4;  //!< rad (INI: degrees)
 		/** Probability that one filter update's odometry failed (slip). */
 		double slip_probability = 0.02;
 		double slip_std_xy = 0.2;  //!< m
@@ -65,7 +61,9 @@ class CMotionModel
 
 	/** Covariance g(u) of one increment, in the increment's start frame. */
 	Eigen::Matrix3d incrementCovariance(const se2::Pose& u) const;
-	/** The floor diag(min_std_xy^2, min_std_xy^2, min_std_phi^2). */
+	/** A tiny floor added to every sampled increment's covariance, so the
+	 * proposal density is defined when the robot stands still:
+	 * diag(1e-4 m, 1e-4 m, 1e-4 rad)^2. */
 	Eigen::Matrix3d covarianceFloor() const;
 	/** The extra covariance of a slip, diag(slip_std_xy^2, .., slip_std_phi^2). */
 	Eigen::Matrix3d slipCovariance() const;

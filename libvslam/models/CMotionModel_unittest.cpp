@@ -34,12 +34,12 @@ TEST(CMotionModel, OptionsRoundTripAndRangeChecks)
 {
 	CMotionModel::TOptions o;
 	o.sigma_T = 0.07;
-	o.min_std_phi = 0.002;
+	o.slip_std_phi = 0.2;
 	const auto cfg = config::toParsedConfig(o, "m");
 	CMotionModel::TOptions back;
 	back.loadFromConfigFile(cfg, "m");
 	EXPECT_NEAR(back.sigma_T, 0.07, 1e-6);
-	EXPECT_NEAR(back.min_std_phi, 0.002, 1e-6);
+	EXPECT_NEAR(back.slip_std_phi, 0.2, 1e-6);
 
 	mrpt::config::CConfigFileMemory bad("[m]\nsigma_T = -1\n");
 	EXPECT_THROW(back.loadFromConfigFile(bad, "m"), ConfigError);
