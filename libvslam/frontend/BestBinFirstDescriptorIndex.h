@@ -6,7 +6,7 @@
  * Exact when the budget covers the level; deterministic (no random
  * choices). Against FLANN's k-d tree, which descends once per row
  * compared, a descent here compares a leaf's rows, so the same recall
- * costs fewer descents (doc/benchmarks.md).
+ * costs fewer descents.
  */
 #include <libvslam/frontend/BestBinFirstTree.h>
 #include <libvslam/frontend/DescriptorCodec.h>

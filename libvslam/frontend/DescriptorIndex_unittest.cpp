@@ -141,7 +141,7 @@ TEST_P(ExactDescriptorIndex, GivesTheBruteForceNeighbours)
  * removed landmark. These uniform random descriptors are harder than real
  * SIFT (all 16 projected dimensions independent): with noise 12 per value
  * the k-d tree finds 100%, FLANN 96% and bbf 96%; with noise 20, the k-d
- * tree 98% and FLANN 76% (benchmarks.md). */
+ * tree 98% and FLANN 76%. */
 TEST_P(DefaultDescriptorIndex, RecallsTheRightLandmarkAndSkipsRemovedOnes)
 {
 	std::mt19937 rng(11);

@@ -4,7 +4,7 @@
  * `b` when it passes Lowe's ratio test, each `b` kept for its best `a` only.
  * The distances come from one matrix product, |a|^2 + |b|^2 - 2 a.b, in
  * blocks of rows (2-3x faster than OpenCV's brute-force matcher on the
- * front-end's sizes, benchmarks.md); the two nearest are then measured
+ * front-end's sizes); the two nearest are then measured
  * directly, so the ratio test sees distances as exact as a direct sum's.
  *
  * Both ways (optional): the pair must also pass the ratio test from b's

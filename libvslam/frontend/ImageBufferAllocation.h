@@ -10,8 +10,8 @@
  * happens depends on what else lives in the heap between images: keeping the
  * previous image's features (the heading change) made SIFT 1.4-1.9x slower
  * on the demo rawlog (one core: 38.7-53.0 against 28.0-28.6 ms per image,
- * page faults and first writes into fresh pages; 23.5-24.3 ms with this;
- * doc/benchmarks.md). The processes that run the front-end call this once
+ * page faults and first writes into fresh pages; 23.5-24.3 ms with this).
+ * The processes that run the front-end call this once
  * at start; it keeps such buffers in the heap and the heap's free top in the
  * process, so each image reuses the pages of the last. The peak resident memory hardly changes (the buffers are
  * resident while SIFT runs anyway: on the demo 100.2 MiB with it against

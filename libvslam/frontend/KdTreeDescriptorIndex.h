@@ -4,7 +4,7 @@
  * power-of-two sub-trees, each rebuilt as rows arrive), searched with
  * nanoflann's eps-approximate k-NN. The codes are kept as the codec stores
  * them (signed bytes when projected). Its cost per query grows with the
- * map: in 16 dimensions the trees prune little (doc/benchmarks.md).
+ * map: in 16 dimensions the trees prune little.
  */
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorIndex.h>

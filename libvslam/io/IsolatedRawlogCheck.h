@@ -7,7 +7,7 @@
  * it; the parent watches its memory and time, and names the entry the child
  * did not survive. Our own reader guards what it can see from outside an
  * object (container counts, odometry values); this covers what only MRPT's
- * code inside an object reads (doc/reliability.md, "Fuzzing").
+ * code inside an object reads (found by fuzzing, doc/reliability.md).
  */
 #include <cstdint>
 #include <optional>

@@ -2,7 +2,7 @@
 /** \file CMotionModel.h
  * The paper's odometry motion model s_{t+1} = f(s_t, u_t) + w_t with
  * E(w w^T) = g(theta_t, u_t, sigma_T, sigma_R). The paper leaves g open; ours
- * (doc/architecture.md, "Motion model"): an odometry increment u = (dx, dy,
+ * (doc/architecture.md): an odometry increment u = (dx, dy,
  * dtheta), expressed in the frame of the pose where it starts, is corrupted
  * by zero-mean Gaussian noise with covariance, in that same frame,
  *
