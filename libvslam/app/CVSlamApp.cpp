@@ -225,7 +225,8 @@ int CVSlamApp::run()
 		? static_cast<uint64_t>(appOptions.RANDOM_SEED)
 		: static_cast<uint32_t>(
 			  std::chrono::system_clock::now().time_since_epoch().count());
-	// Seed once, before any draw (mrpt-2.5-notes pitfall 5).
+	// Seed once, before any draw: MRPT 2.5 does not restart its cached
+	// Gaussian on a reseed, so a later reseed would not repeat a run.
 	mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(summary.seed));
 	{
 		std::ofstream cfg(out("config_used.ini"));

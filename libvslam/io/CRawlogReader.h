@@ -46,7 +46,7 @@ class CRawlogReader
    public:
 	/** Opens the rawlog; throws InputError if it cannot be read. Also points
 	 * MRPT's external-image path at "<dir>/<name>_Images" (the folder
-	 * MRPT's rawlog-edit uses; see mrpt-2.5-notes pitfall 2).
+	 * MRPT's rawlog-edit uses; whose own detection in 2.5 drops a "/").
 	 * With \a isolation (the default), the whole file is first read once in
 	 * a child process (IsolatedRawlogCheck.h): an entry whose bytes crash,
 	 * hang or exhaust MRPT's deserializers there is an InputError naming it
