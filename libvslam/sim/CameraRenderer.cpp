@@ -27,6 +27,12 @@ extern "C" const char* __lsan_default_suppressions()
 {
 	return "leak:swrast_dri.so\nleak:libLLVM\nleak:libgallium\nleak:libGLX_mesa\nleak:libEGL_mesa\n";
 }
+/** Without the list of suppressions used at every exit (LSAN_OPTIONS still
+ * overrides this). */
+extern "C" const char* __lsan_default_options()
+{
+	return "print_suppressions=0";
+}
 #endif
 
 CameraRenderer::CameraRenderer(const mrpt::img::TCamera& camera) : m_camera(camera)
