@@ -116,13 +116,12 @@ std::string CVSlamParticleFilter::takeInputError()
 	return e;
 }
 
-void CVSlamParticleFilter::processFrame(const FrameMeasurements& input)
+void CVSlamParticleFilter::processFrame(const FrameMeasurements& frame)
 {
 	// A heading change corrects the odometry the particles are drawn from
 	// next, at this frame or a later one.
-	if (input.headingChange && m_options.headingChange.enabled) fuseHeadingChange(*input.headingChange);
-	if (input.empty()) return;
-	const FrameMeasurements& frame = input;
+	if (frame.headingChange && m_options.headingChange.enabled) fuseHeadingChange(*frame.headingChange);
+	if (frame.empty()) return;
 	const auto& pf = m_options.pf;
 	if (pf.measurement_processing == MeasurementProcessing::Joint ||
 		frame.measurements.size() <= 1)
