@@ -12,8 +12,9 @@ BIN="${1:-$ROOT/build/bin}"
 # Configuration reference
 
 Every key of every INI section, its default and its meaning, generated from the code
-(`scripts/configuration_md.sh`; a test fails when this file is stale). The defaults are the
-camera configuration, `config_ini/camera.ini`. Sections of one INI file configure the components
+(`scripts/configuration_md.sh`; a test fails when this file is stale). The defaults are the code's;
+`config_ini/camera.ini` lists what a camera + odometry robot changes from them, `config_ini/paper.ini`
+the paper's settings. Sections of one INI file configure the components
 of one run; `--set SECTION.KEY=VALUE` overrides any key on the command line. An unknown or
 misspelled key, or a value out of range, is an error naming the file, section and key.
 
