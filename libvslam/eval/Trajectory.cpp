@@ -1,5 +1,6 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/COutputFile.h>
 #include <libvslam/io/NumericTable.h>
 
 #include <algorithm>
@@ -72,19 +73,18 @@ Trajectory readTrajectory(const std::string& file)
 	return rbpf ? readRbpfSlamPath(file) : readTumTrajectory(file);
 }
 
-void writeTumTrajectory(const std::string& file, const Trajectory& trajectory)
+void writeTumTrajectory(const std::string& file, const Trajectory& trajectory, const std::string& runId)
 {
-	FILE* f = std::fopen(file.c_str(), "wt");
-	if (!f) throw InputError("cannot write '" + file + "'");
-	std::fprintf(f, "# timestamp x y z qx qy qz qw\n");
+	COutputFile out(file, COutputFile::Mode::Atomic);
+	out.print("# timestamp x y z qx qy qz qw\n");
+	if (!runId.empty()) out.print("# vslam run %s\n", runId.c_str());
 	for (const auto& p : trajectory)
 	{
 		double q[4];
 		yawToQuaternion(p.pose.phi, q);
-		std::fprintf(f, "%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", p.t, p.pose.x,
-			p.pose.y, 0.0, q[0], q[1], q[2], q[3]);
+		out.print("%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", p.t, p.pose.x, p.pose.y, 0.0, q[0], q[1], q[2], q[3]);
 	}
-	std::fclose(f);
+	out.commit();
 }
 
 std::optional<se2::Pose> interpolate(const Trajectory& tr, double t, double maxGap)

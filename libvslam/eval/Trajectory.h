@@ -34,7 +34,7 @@ Trajectory readMrptStepPath(const std::string& file);
 /** Reads any of the three formats, told apart by their columns. */
 Trajectory readTrajectory(const std::string& file);
 
-void writeTumTrajectory(const std::string& file, const Trajectory& trajectory);
+void writeTumTrajectory(const std::string& file, const Trajectory& trajectory, const std::string& runId = "");
 
 /** The pose at time t, linearly interpolated (shortest-arc heading);
  * nullopt outside the trajectory or across a gap longer than maxGap s. */

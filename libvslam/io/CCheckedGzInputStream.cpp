@@ -11,10 +11,17 @@ using namespace vslam;
 CCheckedGzInputStream::CCheckedGzInputStream(const std::string& fileName)
 	: m_fileName(fileName)
 {
+	namespace fs = std::filesystem;
 	std::error_code ec;
-	if (!std::filesystem::is_regular_file(fileName, ec))
-		throw InputError("cannot open '" + fileName + "': no such file");
-	m_fileSize = std::filesystem::file_size(fileName, ec);
+	const fs::file_status status = fs::status(fileName, ec);
+	if (!fs::exists(status)) throw InputError("cannot open '" + fileName + "': no such file");
+	if (fs::is_directory(status)) throw InputError("cannot read '" + fileName + "': it is a folder, not a file");
+	// The reader reads the file twice (once in an isolated process): a pipe
+	// or a device cannot be read again.
+	if (!fs::is_regular_file(status))
+		throw InputError("cannot read '" + fileName + "': not a regular file (a pipe or a device); give a file");
+	m_fileSize = fs::file_size(fileName, ec);
+	if (m_fileSize == 0) throw InputError("'" + fileName + "' is empty (0 bytes)");
 	m_gz = gzopen(fileName.c_str(), "rb");
 	if (!m_gz) throw InputError("cannot open '" + fileName + "' for reading");
 }
@@ -70,18 +77,20 @@ size_t CCheckedGzInputStream::readFromFile(unsigned char* out, size_t count)
 		const int n = gzread(gz, out + done, chunk);
 		int err = Z_OK;
 		const char* msg = gzerror(gz, &err);
+		// zlib hands out what it decoded before a cut: that is still data,
+		// and the error comes with the next read.
+		if (n > 0) done += static_cast<size_t>(n);
 		if (n < 0 || (err != Z_OK && err != Z_STREAM_END))
 		{
 			// zlib reports a gzip file cut short as Z_BUF_ERROR.
-			const std::string at =
-				" (after " + std::to_string(m_position + done) + " uncompressed bytes)";
+			const std::string at = " (after " + std::to_string(m_position + done) + " uncompressed bytes)";
 			m_lastError = err == Z_BUF_ERROR
 				? "'" + m_fileName + "' is truncated: the compressed data ends early" + at
 				: "'" + m_fileName + "' is corrupt: " + (msg ? msg : "read error") + at;
+			if (n > 0) break;
 			throw InputError(m_lastError);
 		}
 		if (n == 0) break;  // end of file
-		done += static_cast<size_t>(n);
 	}
 	return done;
 }

@@ -6,11 +6,13 @@
  *    "%u %f %f %f %f %f %f %f" = step x y z yaw pitch roll timestamp;
  *  - RbpfSlamOdometry: rbpf-slam's log_odometry_path.txt rows,
  *    "%i\t%f\t%f\t%f\t%f\t%f\t%f" = step x y z yaw pitch roll;
- *  - Tum: "timestamp x y z qx qy qz qw" with a '#' header.
+ *  - Tum: "timestamp x y z qx qy qz qw" with a '#' header (and, if given,
+ *    a second '#' line naming the run).
+ * Every write is checked: a full disk is an OutputError naming the file.
  */
+#include <libvslam/io/COutputFile.h>
 #include <libvslam/models/SE2.h>
 
-#include <cstdio>
 #include <string>
 
 namespace vslam
@@ -25,9 +27,10 @@ class CPathFileWriter
 		Tum
 	};
 
-	/** Creates (truncates) the file; throws InputError on failure. */
-	CPathFileWriter(const std::string& file, Format format);
-	~CPathFileWriter();
+	/** Creates (truncates) the file; throws OutputError on failure. */
+	CPathFileWriter(const std::string& file, Format format, const std::string& runId = "");
+	/** Closes the file, checking that everything reached it. */
+	void close() { m_out.commit(); }
 	CPathFileWriter(const CPathFileWriter&) = delete;
 	CPathFileWriter& operator=(const CPathFileWriter&) = delete;
 
@@ -35,8 +38,7 @@ class CPathFileWriter
 	void write(size_t step, double t, const se2::Pose& pose);
 
    private:
-	std::string m_file;
 	Format m_format;
-	FILE* m_f = nullptr;
+	COutputFile m_out;
 };
 }  // namespace vslam

@@ -58,9 +58,9 @@ CSerializable::Ptr CRawlogReader::readObject(size_t& entry)
 	entry = m_objects;
 	if (m_unreadable && m_unreadable->entry == entry) fail(entry, "corrupt data: " + m_unreadable->why);
 	const uint64_t before = m_stream->getPosition();
-	checkElementCount(entry);
 	try
 	{
+		checkElementCount(entry);
 		auto obj = m_archive->ReadObject();
 		m_objects++;
 		return obj;
@@ -77,10 +77,13 @@ CSerializable::Ptr CRawlogReader::readObject(size_t& entry)
 	}
 	catch (const InputError& e)
 	{
+		if (std::string(e.what()).rfind("rawlog '", 0) == 0) throw;  // names its entry already
 		fail(entry, e.what());
 	}
 	catch (const std::exception& e)
 	{
+		// A short read of a cut file: the stream knows why.
+		if (!m_stream->lastError().empty()) fail(entry, m_stream->lastError());
 		const std::string text = exceptionText(e);
 		if (text.find("not registered") != std::string::npos)
 			fail(entry, text + " (a class this program does not know)");

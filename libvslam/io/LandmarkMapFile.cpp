@@ -1,4 +1,5 @@
 #include <libvslam/core/InputError.h>
+#include <libvslam/io/COutputFile.h>
 #include <libvslam/io/LandmarkMapFile.h>
 
 #include <Eigen/Cholesky>
@@ -93,23 +94,22 @@ LandmarkMap readLandmarkMap(
 	return map;
 }
 
-void writeLandmarkMap(
-	const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank)
+void writeLandmarkMap(const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank,
+	const std::string& runId)
 {
-	FILE* f = std::fopen(file.c_str(), "wt");
-	if (!f) throw InputError("cannot create output file '" + file + "'");
-	std::fprintf(f,
-		"%% id kind x y phi var_x cov_xy cov_xphi var_y cov_yphi var_phi measurements\n");
+	COutputFile out(file, COutputFile::Mode::Atomic);
+	out.print("%% id kind x y phi var_x cov_xy cov_xphi var_y cov_yphi var_phi measurements\n");
+	if (!runId.empty()) out.print("%% vslam run %s\n", runId.c_str());
 	for (size_t slot = 0; slot < bank.size(); slot++)
 	{
 		const auto& e = index.entry(slot);
 		const auto& l = bank[slot];
 		const auto& C = l.cov;
-		std::fprintf(f, "%lld %s %.6f %.6f %.6f %.9g %.9g %.9g %.9g %.9g %.9g %llu\n",
+		out.print("%lld %s %.6f %.6f %.6f %.9g %.9g %.9g %.9g %.9g %.9g %llu\n",
 			static_cast<long long>(e.key.id), toString(e.key.kind), l.mean[0], l.mean[1],
 			l.mean[2], C(0, 0), C(0, 1), C(0, 2), C(1, 1), C(1, 2), C(2, 2),
 			static_cast<unsigned long long>(e.measurements));
 	}
-	std::fclose(f);
+	out.commit();
 }
 }  // namespace vslam

@@ -30,6 +30,8 @@ using LandmarkMap = std::vector<std::pair<LandmarkKey, LandmarkEstimate>>;
 LandmarkMap readLandmarkMap(
 	const std::string& file, double stdXY, double stdPhi, std::vector<uint64_t>* measurements = nullptr);
 
-void writeLandmarkMap(
-	const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank);
+/** Writes the map atomically (a temporary file renamed), with a comment line
+ * naming the run if `runId` is given; throws OutputError. */
+void writeLandmarkMap(const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank,
+	const std::string& runId = "");
 }  // namespace vslam
