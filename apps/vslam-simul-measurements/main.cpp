@@ -7,6 +7,8 @@
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigReference.h>
+#include <libvslam/config/StrictRead.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/KeyValidation.h>
@@ -36,7 +38,9 @@ int main(int argc, const char** argv)
 		if (args.has("--print-default-config"))
 		{
 			const std::string text = config::toIniText(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
-			std::cout << (args.has("--markdown") ? config::markdownReference(text) : text);
+			config::NumericKeyRecorder numbers;  // the ranges the readers check
+			TMeasurementSimOptions().loadFromConfigFile(mrpt::config::CConfigFileMemory(), TMeasurementSimOptions::kSection);
+			std::cout << (args.has("--markdown") ? config::markdownReference(text, numbers.keys()) : text);
 			return 0;
 		}
 		const auto& positional = args.positional;

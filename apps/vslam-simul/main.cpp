@@ -12,6 +12,8 @@
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/ConfigReference.h>
+#include <libvslam/config/StrictRead.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/io/CRawlogReader.h>
@@ -57,7 +59,11 @@ int main(int argc, const char** argv)
 		if (args.has("--print-default-config"))
 		{
 			const std::string text = config::toIniText(TVisualSimOptions(), TVisualSimOptions::kSection);
-			std::cout << (args.has("--markdown") ? config::markdownReference(text) : text);
+			config::NumericKeyRecorder numbers;  // the ranges the readers check
+			// The defaults with a generated home: a scenario needs a world.
+			TVisualSimOptions().loadFromConfigFile(
+				mrpt::config::CConfigFileMemory("[vslam_simul]\nworld_seed = 1\n"), TVisualSimOptions::kSection);
+			std::cout << (args.has("--markdown") ? config::markdownReference(text, numbers.keys()) : text);
 			return 0;
 		}
 		const auto& positional = args.positional;

@@ -13,9 +13,9 @@ void TVSlamAppOptions::loadFromConfigFile(
 	ground_truth_file = readString(c, s, "ground_truth_file", ground_truth_file);
 	prior_map_file = readString(c, s, "prior_map_file", prior_map_file);
 	prior_map_std_xy =
-		readDouble(c, s, "prior_map_std_xy", prior_map_std_xy, Range::positive());
+		readDouble(c, s, "prior_map_std_xy", prior_map_std_xy, Range{0, 100, false, true});
 	prior_map_std_phi = readDegreesAsRadians(
-		c, s, "prior_map_std_phi_deg", prior_map_std_phi, Range::positive());
+		c, s, "prior_map_std_phi_deg", prior_map_std_phi, Range{0, 360, false, true});
 	initial_pose_from_ground_truth =
 		readBool(c, s, "initial_pose_from_ground_truth", initial_pose_from_ground_truth);
 	max_steps = static_cast<uint64_t>(readInt(c, s, "max_steps", 0, Range::closed(0, 1e15)));

@@ -31,18 +31,25 @@ std::string shortNumber(const std::string& v)
 }
 }  // namespace
 
-std::string markdownReference(const std::string& iniText)
+std::string markdownReference(const std::string& iniText, const std::vector<NumericKey>& numbers)
 {
 	std::istringstream in(iniText);
 	std::ostringstream out;
-	std::string line;
+	std::string line, section;
+	const auto allowed = [&](const std::string& key) -> std::string {
+		for (const auto& n : numbers)
+			if (n.section == section && n.key == key)
+				return (n.integer ? "integer " : "") + n.range.describe();
+		return "";
+	};
 	while (std::getline(in, line))
 	{
 		const std::string t = trimmed(line);
 		if (t.empty()) continue;
 		if (t.front() == '[' && t.back() == ']')
 		{
-			out << "\n### " << t << "\n\n| key | default | meaning |\n|---|---|---|\n";
+			section = t.substr(1, t.size() - 2);
+			out << "\n### " << t << "\n\n| key | default | allowed | meaning |\n|---|---|---|---|\n";
 			continue;
 		}
 		const size_t eq = t.find('=');
@@ -54,8 +61,9 @@ std::string markdownReference(const std::string& iniText)
 			value = value.substr(0, slashes);
 		}
 		value = shortNumber(trimmed(value));
-		out << "| `" << trimmed(t.substr(0, eq)) << "` | " << (value.empty() ? "" : "`" + cell(value) + "`") << " | "
-			<< cell(meaning) << " |\n";
+		const std::string key = trimmed(t.substr(0, eq));
+		out << "| `" << key << "` | " << (value.empty() ? "" : "`" + cell(value) + "`") << " | " << cell(allowed(key))
+			<< " | " << cell(meaning) << " |\n";
 	}
 	return out.str();
 }

@@ -24,15 +24,19 @@ Override parseOverride(const std::string& text);
 void applyOverrides(
 	mrpt::config::CConfigFileBase& cfg, const std::vector<Override>& overrides);
 
-/** Parses INI text (MRPT syntax, with its @include, $define, $eval{} and
- * ${var} directives), then applies the overrides and parses the result
- * again, so keys written by overrides are seen like keys in the text.
- * Syntax errors, which MRPT throws as plain runtime errors, become
- * ConfigError. */
 /** The text of an INI file; ConfigError "cannot read configuration file"
  * naming it if it cannot be read. */
 std::string readIniFile(const std::string& file);
 
+/** `s` without leading and trailing blanks. */
+std::string trim(const std::string& s);
+
+/** Parses INI text (MRPT syntax, with its @include, $define, $eval{} and
+ * ${var} directives), then applies the overrides and parses the result
+ * again, so keys written by overrides are seen like keys in the text.
+ * Syntax errors, which MRPT throws as plain runtime errors, become
+ * ConfigError; so do what MRPT would pass silently: binary data, keys above
+ * the first section, a section or a key given twice. */
 mrpt::config::CConfigFileMemory parseIniWithOverrides(
 	const std::string& iniText, const std::vector<Override>& overrides);
 

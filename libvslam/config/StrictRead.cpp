@@ -49,6 +49,9 @@ double parseDouble(
 		fail(
 			section, key, v,
 			"not a number (comments after a value must start with '//')");
+	// strtod reads C's hexadecimal numbers; an INI value is decimal.
+	if (v.find_first_of("xX") != std::string::npos)
+		fail(section, key, v, "not a decimal number");
 	if (errno == ERANGE || !std::isfinite(d))
 		fail(section, key, v, "not a finite number");
 	return d;
@@ -61,7 +64,20 @@ void checkRange(
 	if (!range.contains(d))
 		fail(section, key, v, "out of range, must be " + range.describe());
 }
+
+thread_local NumericKeyRecorder* activeRecorder = nullptr;
 }  // namespace
+
+NumericKeyRecorder::NumericKeyRecorder() : m_outer(activeRecorder) { activeRecorder = this; }
+NumericKeyRecorder::~NumericKeyRecorder() { activeRecorder = m_outer; }
+
+void NumericKeyRecorder::record(const NumericKey& key)
+{
+	if (!activeRecorder) return;
+	for (const auto& k : activeRecorder->m_keys)
+		if (k.section == key.section && k.key == key.key) return;
+	activeRecorder->m_keys.push_back(key);
+}
 
 bool Range::contains(double v) const
 {
@@ -73,6 +89,7 @@ bool Range::contains(double v) const
 std::string Range::describe() const
 {
 	std::ostringstream s;
+	s.precision(12);  // whole integers such as 4294967295
 	const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
 	if (hasLo && hasHi)
 		s << "in " << (loInclusive ? "[" : "(") << lo << ", " << hi
@@ -102,6 +119,7 @@ double readDouble(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	const std::string& key, double defaultValue, const Range& range)
 {
+	NumericKeyRecorder::record({section, key, range, false, defaultValue});
 	if (!cfg.keyExists(section, key)) return defaultValue;
 	const std::string v = rawValue(cfg, section, key);
 	const double d = parseDouble(section, key, v);
@@ -123,6 +141,7 @@ int64_t readInt(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	const std::string& key, int64_t defaultValue, const Range& range)
 {
+	NumericKeyRecorder::record({section, key, range, true, static_cast<double>(defaultValue)});
 	if (!cfg.keyExists(section, key)) return defaultValue;
 	const std::string v = rawValue(cfg, section, key);
 	if (v.empty()) fail(section, key, v, "empty value, expected an integer");

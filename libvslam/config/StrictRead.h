@@ -32,6 +32,34 @@ struct Range
 	std::string describe() const;
 };
 
+/** A numeric key as the code reads it: its allowed range and its default. */
+struct NumericKey
+{
+	std::string section, key;
+	Range range;
+	bool integer = false;
+	double defaultValue = 0;
+};
+
+/** While one is alive, every numeric key read on this thread (present or
+ * not) is recorded with its range: the options' own description of their
+ * numbers, for the configuration reference and the extreme-value tests. */
+class NumericKeyRecorder
+{
+   public:
+	NumericKeyRecorder();
+	~NumericKeyRecorder();
+	NumericKeyRecorder(const NumericKeyRecorder&) = delete;
+	NumericKeyRecorder& operator=(const NumericKeyRecorder&) = delete;
+	const std::vector<NumericKey>& keys() const { return m_keys; }
+	/** Called by the readers. */
+	static void record(const NumericKey& key);
+
+   private:
+	std::vector<NumericKey> m_keys;
+	NumericKeyRecorder* m_outer;
+};
+
 double readDouble(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	const std::string& key, double defaultValue,

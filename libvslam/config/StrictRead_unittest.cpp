@@ -73,3 +73,30 @@ TEST(StrictRead, OutOfRangeValuesSayTheAllowedRange)
 	EXPECT_NE(e3.find("joint, sequential"), std::string::npos) << e3;
 	EXPECT_NE(errorOf([&] { readWord(c, "pf", "ch", "joint", {"joint", "sequential"}); }).find("ch"), std::string::npos);
 }
+
+TEST(StrictRead, HexadecimalNumbersAreErrorsNotSixteen)
+{
+	mrpt::config::CConfigFileMemory c("[s]\nd = 0x10\ni = 0x10\nf = 0X1p3\n");
+	EXPECT_NE(errorOf([&] { readDouble(c, "s", "d", 0); }).find("[s] d = '0x10': not a decimal number"),
+		std::string::npos);
+	EXPECT_NE(errorOf([&] { readInt(c, "s", "i", 0); }), "");
+	EXPECT_NE(errorOf([&] { readDouble(c, "s", "f", 0); }), "");
+}
+
+TEST(StrictRead, TheRecorderListsEveryNumericKeyReadWithItsRange)
+{
+	mrpt::config::CConfigFileMemory c("[s]\na = 2\n");
+	NumericKeyRecorder recorder;
+	readDouble(c, "s", "a", 1, Range::closed(0, 5));
+	readInt(c, "s", "absent", 3, Range::positive());
+	readDegreesAsRadians(c, "s", "angle_deg", M_PI / 2, Range::closed(0, 180));
+	readDouble(c, "s", "a", 1, Range::closed(0, 5));  // read twice, listed once
+	ASSERT_EQ(recorder.keys().size(), 3u);
+	EXPECT_EQ(recorder.keys()[0].key, "a");
+	EXPECT_EQ(recorder.keys()[0].range.hi, 5);
+	EXPECT_EQ(recorder.keys()[1].key, "absent");
+	EXPECT_TRUE(recorder.keys()[1].integer);
+	EXPECT_EQ(recorder.keys()[1].defaultValue, 3);
+	EXPECT_NEAR(recorder.keys()[2].defaultValue, 90, 1e-9);  // in the key's own unit
+	EXPECT_EQ(recorder.keys()[2].range.hi, 180);
+}

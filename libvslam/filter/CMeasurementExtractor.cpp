@@ -14,11 +14,11 @@ using namespace vslam::config;
 void CMeasurementExtractor::TVisualOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-	std_dx = readDouble(c, s, "std_dx", std_dx, Range::positive());
-	std_dy = readDouble(c, s, "std_dy", std_dy, Range::positive());
-	std_dphi = readDegreesAsRadians(c, s, "std_dphi_deg", std_dphi, Range::positive());
+	std_dx = readDouble(c, s, "std_dx", std_dx, Range{0, 100, false, true});
+	std_dy = readDouble(c, s, "std_dy", std_dy, Range{0, 100, false, true});
+	std_dphi = readDegreesAsRadians(c, s, "std_dphi_deg", std_dphi, Range{0, 360, false, true});
 	predicted_cov_scale =
-		readDouble(c, s, "predicted_cov_scale", predicted_cov_scale, Range::nonNegative());
+		readDouble(c, s, "predicted_cov_scale", predicted_cov_scale, Range::closed(0, 100));
 }
 
 void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
@@ -35,9 +35,9 @@ void CMeasurementExtractor::TVisualOptions::saveToConfigFile(
 void CMeasurementExtractor::TRangeBearingOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-	std_range = readDouble(c, s, "std_range", std_range, Range::nonNegative());
+	std_range = readDouble(c, s, "std_range", std_range, Range::closed(0, 1000));
 	std_bearing = readDegreesAsRadians(
-		c, s, "std_bearing_deg", std_bearing, Range::nonNegative());
+		c, s, "std_bearing_deg", std_bearing, Range::closed(0, 180));
 	min_range = readDouble(c, s, "min_range", min_range, Range::nonNegative());
 	max_range = readDouble(c, s, "max_range", max_range, Range::nonNegative());
 }
@@ -57,8 +57,8 @@ void CMeasurementExtractor::THeadingChangeOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	enabled = readBool(c, s, "enabled", enabled);
-	std_scale = readDouble(c, s, "std_scale", std_scale, Range::positive());
-	min_std = readDegreesAsRadians(c, s, "min_std_deg", min_std, Range::nonNegative());
+	std_scale = readDouble(c, s, "std_scale", std_scale, Range{0, 100, false, true});
+	min_std = readDegreesAsRadians(c, s, "min_std_deg", min_std, Range::closed(0, 90));
 	gate_probability = readDouble(c, s, "gate_probability", gate_probability, {0, 1, false, false});
 }
 

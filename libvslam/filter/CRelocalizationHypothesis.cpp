@@ -42,6 +42,7 @@ double CRelocalizationHypothesis::logLikelihood(
 	double sum = 0;
 	for (const auto& k : ms)
 	{
+		if (k.slot >= m_bank.size()) continue;  // made after the hypothesis began: unknown to it
 		const auto& model = landmarkModel(k.m->kind());
 		sum += likelihood.logLikelihood(
 			evaluateMeasurement(model, s, m_bank[k.slot], *k.m), k.m->kind());
@@ -124,6 +125,7 @@ double CRelocalizationHypothesis::explainedFraction(
 	double best = 0;
 	for (const auto& k : ms)
 	{
+		if (k.slot >= m_bank.size()) continue;  // made after the hypothesis began: unknown to it
 		const auto& model = landmarkModel(k.m->kind());
 		size_t inside = 0;
 		for (const auto& s : m_poses)

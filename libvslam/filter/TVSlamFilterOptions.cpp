@@ -27,7 +27,7 @@ void TParticleFilterOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	sampleSize = static_cast<uint32_t>(
-		readInt(c, s, "sampleSize", sampleSize, Range::closed(1, 1e7)));
+		readInt(c, s, "sampleSize", sampleSize, Range::closed(1, 1e5)));
 	BETA = readDouble(c, s, "BETA", BETA, Range::closed(0, 1));
 	resamplingMethod =
 		static_cast<CParticleFilter::TParticleResamplingAlgorithm>(readChoice(
@@ -36,13 +36,13 @@ void TParticleFilterOptions::loadFromConfigFile(
 	measurement_processing = static_cast<MeasurementProcessing>(readChoice(
 		c, s, "measurement_processing",
 		static_cast<size_t>(measurement_processing), kProcessingNames));
-	initialPose.x = readDouble(c, s, "initial_x", initialPose.x);
-	initialPose.y = readDouble(c, s, "initial_y", initialPose.y);
-	initialPose.phi = readDegreesAsRadians(c, s, "initial_phi_deg", initialPose.phi);
+	initialPose.x = readDouble(c, s, "initial_x", initialPose.x, Range::closed(-1e7, 1e7));
+	initialPose.y = readDouble(c, s, "initial_y", initialPose.y, Range::closed(-1e7, 1e7));
+	initialPose.phi = readDegreesAsRadians(c, s, "initial_phi_deg", initialPose.phi, Range::closed(-360, 360));
 	initial_std_xy =
-		readDouble(c, s, "initial_std_xy", initial_std_xy, Range::nonNegative());
+		readDouble(c, s, "initial_std_xy", initial_std_xy, Range::closed(0, 1000));
 	initial_std_phi = readDegreesAsRadians(
-		c, s, "initial_std_phi_deg", initial_std_phi, Range::nonNegative());
+		c, s, "initial_std_phi_deg", initial_std_phi, Range::closed(0, 360));
 }
 
 void TParticleFilterOptions::saveToConfigFile(
@@ -69,9 +69,9 @@ void TParticleFilterOptions::saveToConfigFile(
 void TLandmarkOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-	init_std_xy = readDouble(c, s, "init_std_xy", init_std_xy, Range::nonNegative());
+	init_std_xy = readDouble(c, s, "init_std_xy", init_std_xy, Range::closed(0, 100));
 	init_std_phi = readDegreesAsRadians(
-		c, s, "init_std_phi_deg", init_std_phi, Range::nonNegative());
+		c, s, "init_std_phi_deg", init_std_phi, Range::closed(0, 360));
 	anchor_first_landmark = readBool(c, s, "anchor_first_landmark", anchor_first_landmark);
 }
 

@@ -38,14 +38,14 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "creation_min_parallax_deg", creation_min_parallax_deg, Range::closed(0, 90));
 	creation_max_depth = readDouble(c, s, "creation_max_depth", creation_max_depth, Range::positive());
 	creation_odometry_sigma_deg =
-		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range::positive());
+		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range{0, 90, false, true});
 	creation_odometry_sigma_rel =
-		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range::positive());
+		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range{0, 10, false, true});
 	creation_visual_heading = readBool(c, s, "creation_visual_heading", creation_visual_heading);
 	creation_guided_matching = readBool(c, s, "creation_guided_matching", creation_guided_matching);
 	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
 	scale_odometry_sigma =
-		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::nonNegative());
+		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::closed(0, 10));
 	recognition_min_votes = readCount("recognition_min_votes", recognition_min_votes, 1, 100000);
 	recognition_max_candidates =
 		readCount("recognition_max_candidates", recognition_max_candidates, 1, 1000);

@@ -9,15 +9,15 @@ using namespace vslam::config;
 void CMotionModel::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-	sigma_T = readDouble(c, s, "sigma_T", sigma_T, Range::nonNegative());
-	sigma_R = readDouble(c, s, "sigma_R", sigma_R, Range::nonNegative());
+	sigma_T = readDouble(c, s, "sigma_T", sigma_T, Range::closed(0, 10));
+	sigma_R = readDouble(c, s, "sigma_R", sigma_R, Range::closed(0, 10));
 	sigma_R_per_meter = readDouble(
-		c, s, "sigma_R_per_meter", sigma_R_per_meter, Range::nonNegative());
+		c, s, "sigma_R_per_meter", sigma_R_per_meter, Range::closed(0, 10));
 	slip_probability =
 		readDouble(c, s, "slip_probability", slip_probability, Range::halfOpen(0, 1));
-	slip_std_xy = readDouble(c, s, "slip_std_xy", slip_std_xy, Range::positive());
+	slip_std_xy = readDouble(c, s, "slip_std_xy", slip_std_xy, Range{0, 100, false, true});
 	slip_std_phi =
-		readDegreesAsRadians(c, s, "slip_std_phi_deg", slip_std_phi, Range::positive());
+		readDegreesAsRadians(c, s, "slip_std_phi_deg", slip_std_phi, Range{0, 360, false, true});
 }
 
 void CMotionModel::TOptions::saveToConfigFile(

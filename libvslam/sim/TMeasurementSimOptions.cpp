@@ -38,13 +38,13 @@ void TMeasurementSimOptions::loadFromConfigFile(
 	if (2 * wall_margin >= std::min(room_width, room_height))
 		throw ConfigError("[" + s + "] wall_margin leaves no free space in the room");
 
-	odo_sigma_T = readDouble(c, s, "odo_sigma_T", odo_sigma_T, Range::nonNegative());
-	odo_sigma_R = readDouble(c, s, "odo_sigma_R", odo_sigma_R, Range::nonNegative());
-	odo_sigma_R_per_meter = readDouble(c, s, "odo_sigma_R_per_meter", odo_sigma_R_per_meter, Range::nonNegative());
+	odo_sigma_T = readDouble(c, s, "odo_sigma_T", odo_sigma_T, Range::closed(0, 10));
+	odo_sigma_R = readDouble(c, s, "odo_sigma_R", odo_sigma_R, Range::closed(0, 10));
+	odo_sigma_R_per_meter = readDouble(c, s, "odo_sigma_R_per_meter", odo_sigma_R_per_meter, Range::closed(0, 10));
 	odo_scale_bias = readDouble(c, s, "odo_scale_bias", odo_scale_bias, Range::closed(-0.5, 0.5));
 	odo_turn_bias = readDouble(c, s, "odo_turn_bias", odo_turn_bias, Range::closed(-0.5, 0.5));
 	slip_probability = readDouble(c, s, "slip_probability", slip_probability, Range::closed(0, 1));
-	slip_std = readDouble(c, s, "slip_std", slip_std, Range::nonNegative());
+	slip_std = readDouble(c, s, "slip_std", slip_std, Range::closed(0, 10));
 
 	landmark_type = static_cast<LandmarkType>(readChoice(
 		c, s, "landmark_type", static_cast<size_t>(landmark_type), {"visual", "range_bearing"}));
@@ -59,19 +59,19 @@ void TMeasurementSimOptions::loadFromConfigFile(
 	recognition_probability = readDouble(c, s, "recognition_probability", recognition_probability, Range::closed(0, 1));
 	creation_min_distance = readDouble(c, s, "creation_min_distance", creation_min_distance, Range::nonNegative());
 	creation_min_angle = readDegreesAsRadians(c, s, "creation_min_angle_deg", creation_min_angle, Range::closed(0, 180));
-	meas_std_dx = readDouble(c, s, "meas_std_dx", meas_std_dx, Range::nonNegative());
-	meas_std_dy = readDouble(c, s, "meas_std_dy", meas_std_dy, Range::nonNegative());
-	meas_std_dphi = readDegreesAsRadians(c, s, "meas_std_dphi_deg", meas_std_dphi, Range::nonNegative());
-	landmark_frame_std_xy = readDouble(c, s, "landmark_frame_std_xy", landmark_frame_std_xy, Range::nonNegative());
-	landmark_frame_std_phi = readDegreesAsRadians(c, s, "landmark_frame_std_phi_deg", landmark_frame_std_phi, Range::nonNegative());
+	meas_std_dx = readDouble(c, s, "meas_std_dx", meas_std_dx, Range::closed(0, 100));
+	meas_std_dy = readDouble(c, s, "meas_std_dy", meas_std_dy, Range::closed(0, 100));
+	meas_std_dphi = readDegreesAsRadians(c, s, "meas_std_dphi_deg", meas_std_dphi, Range::closed(0, 360));
+	landmark_frame_std_xy = readDouble(c, s, "landmark_frame_std_xy", landmark_frame_std_xy, Range::closed(0, 100));
+	landmark_frame_std_phi = readDegreesAsRadians(c, s, "landmark_frame_std_phi_deg", landmark_frame_std_phi, Range::closed(0, 360));
 	bad_measurement_probability = readDouble(c, s, "bad_measurement_probability", bad_measurement_probability, Range::closed(0, 1));
 	false_recognition_probability = readDouble(c, s, "false_recognition_probability", false_recognition_probability, Range::closed(0, 1));
 
 	point_landmarks = static_cast<uint32_t>(readInt(c, s, "point_landmarks", point_landmarks, Range::closed(0, 1e6)));
 	rb_max_range = readDouble(c, s, "rb_max_range", rb_max_range, Range::positive());
 	rb_fov = readDegreesAsRadians(c, s, "rb_fov_deg", rb_fov, {0, 360, false, true});
-	rb_std_range = readDouble(c, s, "rb_std_range", rb_std_range, Range::positive());
-	rb_std_bearing = readDegreesAsRadians(c, s, "rb_std_bearing_deg", rb_std_bearing, Range::positive());
+	rb_std_range = readDouble(c, s, "rb_std_range", rb_std_range, Range{0, 1000, false, true});
+	rb_std_bearing = readDegreesAsRadians(c, s, "rb_std_bearing_deg", rb_std_bearing, Range{0, 360, false, true});
 
 	kidnap_times = readNumberList(c, s, "kidnap_times", kidnap_times);
 	for (double t : kidnap_times)
