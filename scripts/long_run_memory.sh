@@ -31,6 +31,11 @@ mkdir -p "$WORK"
 echo "| simulated time [s] | steps | landmarks in map | ATE RMSE [m] | wall time [s] | peak memory [MiB] | vs the first |"
 echo "|---|---|---|---|---|---|---|"
 first=""
+# FIELD of path NAME in run_summary.yaml's error_vs_ground_truth_m block.
+summary_error() {
+  awk -v name="$1" -v field="$2" '/^[^ ]/ { e = ($1 == "error_vs_ground_truth_m:") }
+    e && /^  [^ ]/ { p = ($1 == name ":") } e && p && $1 == field ":" { print $2; exit }' "$3"
+}
 for d in $DURATIONS; do
   rawlog="$WORK/run_$d.rawlog"
   if grep -q '^\[vslam_simul\]' "$SIM_INI"; then
@@ -48,7 +53,7 @@ for d in $DURATIONS; do
   summary="$out/run_summary.yaml"
   steps=$(awk '$1 == "steps:" {print $2; exit}' "$summary")
   peak=$(awk '$1 == "peak_memory_MiB:" {print $2; exit}' "$summary")
-  ate=$(grep -o '^  vslam: {[^}]*rmse: [0-9.e-]*' "$summary" | grep -o '[0-9.e-]*$')
+  ate=$(summary_error vslam rmse "$summary")
   landmarks=$(grep -vc '^%' "$out/final_map.txt" || true)
   [[ -z "$first" ]] && first="$peak"
   awk -v d="$d" -v s="$steps" -v l="$landmarks" -v a="$ate" -v t0="$start" -v t1="$end" \

@@ -29,7 +29,12 @@ while [[ $# -gt 0 ]]; do
 done
 mkdir -p "$OUT"
 
-rmse() { grep "  $1: " "$2" | sed 's/.* rmse: \([0-9.e-]*\),.*/\1/'; }
+# FIELD of path NAME in run_summary.yaml's error_vs_ground_truth_m block.
+summary_error() {
+  awk -v name="$1" -v field="$2" '/^[^ ]/ { e = ($1 == "error_vs_ground_truth_m:") }
+    e && /^  [^ ]/ { p = ($1 == name ":") } e && p && $1 == field ":" { print $2; exit }' "$3"
+}
+rmse() { summary_error "$1" rmse "$2"; }
 echo "| seed | vslam ATE RMSE [m] | dead reckoning [m] | kidnaps detected |"
 echo "|---|---|---|---|"
 sumV=0 sumD=0 n=0
@@ -44,7 +49,7 @@ for s in $SEEDS; do
     { cat "$log" >&2; exit 1; }
   summary="$OUT/vslam_s$s/run_summary.yaml"
   v="$(rmse vslam "$summary")" d="$(rmse dead_reckoning "$summary")"
-  k="$(grep "kidnaps_detected" "$summary" | awk '{print $2}')"
+  k="$(awk '$1 == "kidnaps_detected:" {print $2; exit}' "$summary")"
   printf "| %s | %.3f | %.3f | %s |\n" "$s" "$v" "$d" "$k"
   sumV="$(awk -v a="$sumV" -v b="$v" 'BEGIN{print a+b}')"
   sumD="$(awk -v a="$sumD" -v b="$d" 'BEGIN{print a+b}')"

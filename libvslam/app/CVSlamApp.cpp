@@ -1,16 +1,22 @@
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/app/InterruptFlag.h>
+#include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/ConfigReference.h>
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
+#include <libvslam/core/NumericalError.h>
+#include <libvslam/core/OutputError.h>
+#include <libvslam/eval/GroundTruthCheck.h>
 #include <libvslam/eval/Trajectory.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
 #include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
+#include <libvslam/io/COutputFile.h>
 #include <libvslam/io/CPathFileWriter.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/ExceptionText.h>
@@ -21,11 +27,13 @@
 #include <mrpt/system/datetime.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 using namespace vslam;
@@ -58,6 +66,16 @@ std::string CVSlamApp::defaultConfigText()
 	return text;
 }
 
+std::vector<config::NumericKey> CVSlamApp::numericKeys()
+{
+	config::NumericKeyRecorder recorder;
+	const mrpt::config::CConfigFileMemory none;  // every key at its default
+	TVSlamAppOptions().loadFromConfigFile(none, TVSlamAppOptions::kSection);
+	TVSlamFilterOptions().loadFromConfig(none);
+	TVisualFrontEndOptions().loadFromConfigFile(none, TVisualFrontEndOptions::kSection);
+	return recorder.keys();
+}
+
 config::KnownKeys CVSlamApp::knownKeys()
 {
 	config::KnownKeys known;
@@ -85,13 +103,10 @@ bool hasImages(const mrpt::obs::CSensoryFrame& sf)
 
 void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::string>& overrides)
 {
-	std::ifstream in(file);
-	if (!in) throw ConfigError("cannot read configuration file '" + file + "'");
-	std::stringstream text;
-	text << in.rdbuf();
+	const std::string text = config::readIniFile(file);
 	std::vector<config::Override> parsed;
 	for (const auto& o : overrides) parsed.push_back(config::parseOverride(o));
-	params = config::parseIniWithOverrides(text.str(), parsed);
+	params = config::parseIniWithOverrides(text, parsed);
 
 	config::checkNoUnknownKeys(params, knownKeys());
 	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);
@@ -125,7 +140,7 @@ bool CVSlamApp::initialize(int argc, const char** argv)
 		{
 			// --markdown: the configuration reference (doc/configuration.md).
 			const bool markdown = i + 1 < argc && std::string(argv[i + 1]) == "--markdown";
-			std::cout << (markdown ? config::markdownReference(defaultConfigText()) : defaultConfigText());
+			std::cout << (markdown ? config::markdownReference(defaultConfigText(), numericKeys()) : defaultConfigText());
 			return false;
 		}
 		if (a == "--out")
@@ -197,246 +212,426 @@ class ProgressReporter
 };
 
 double toSeconds(mrpt::Clock::time_point t) { return mrpt::Clock::toDouble(t); }
+
+/** The message of a caught exception, for the summary. */
+std::string failureText(const std::exception_ptr& failure)
+{
+	try
+	{
+		std::rethrow_exception(failure);
+	}
+	catch (const std::bad_alloc&)
+	{
+		return "out of memory";
+	}
+	catch (const std::exception& e)
+	{
+		return exceptionText(e);
+	}
+	catch (...)
+	{
+		return "unknown error";
+	}
+}
+
+/** The files written step by step, each row flushed. */
+struct StepOutputs
+{
+	CPathFileWriter rbpf, tum, odometry, odometryTum, smoothed;
+	COutputFile stepLog;
+
+	StepOutputs(const RunOutputFolder& folder, const std::string& runId)
+		: rbpf(folder.file("log_estimated_path.txt"), CPathFileWriter::Format::RbpfSlam),
+		  tum(folder.file("estimated_path.tum"), CPathFileWriter::Format::Tum, runId),
+		  odometry(folder.file("log_odometry_path.txt"), CPathFileWriter::Format::RbpfSlamOdometry),
+		  odometryTum(folder.file("odometry_path.tum"), CPathFileWriter::Format::Tum, runId),
+		  smoothed(folder.file("smoothed_path.tum"), CPathFileWriter::Format::Tum, runId),
+		  stepLog(folder.file("log_filter_steps.txt"), COutputFile::Mode::Streamed)
+	{
+		stepLog.print(
+			"%% step timestamp ESS dual_ratio dual_particles explained_fraction "
+			"hypothesis_support kidnap_declared landmarks measurements_used step_ms spread_xy spread_phi_deg\n");
+		stepLog.print("%% vslam run %s\n", runId.c_str());
+		stepLog.flush();
+	}
+	void close()
+	{
+		for (auto* w : {&rbpf, &tum, &odometry, &odometryTum, &smoothed}) w->close();
+		stepLog.commit();
+	}
+};
+
+/** The noise and spread keys the configuration sets away from their
+ * defaults: the likely cause of a filter state that stopped being finite. */
+std::string likelyNumericalCause(const mrpt::config::CConfigFileBase& params)
+{
+	std::string keys;
+	for (const auto& k : CVSlamApp::numericKeys())
+	{
+		const bool noise = k.key.find("std") != std::string::npos || k.key.find("sigma") != std::string::npos;
+		if (!noise || !params.keyExists(k.section, k.key)) continue;
+		const std::string value = config::rawValue(params, k.section, k.key);
+		if (std::strtod(value.c_str(), nullptr) == k.defaultValue) continue;
+		keys += (keys.empty() ? "" : ", ") + ("[" + k.section + "] " + k.key + " = " + value);
+	}
+	return keys.empty() ? "no noise key differs from its default" : "likely cause: " + keys;
+}
+
+/** Throws NumericalError if the filter's weights, mean or covariance are no
+ * longer finite: every output after that would be NaN. */
+void checkFilterIsFinite(const CVSlamParticleFilter& filter, uint64_t step, const mrpt::config::CConfigFileBase& params)
+{
+	const se2::Pose mean = filter.meanPose();
+	bool finite = std::isfinite(mean.x) && std::isfinite(mean.y) && std::isfinite(mean.phi) &&
+		filter.poseCovariance().allFinite();
+	for (size_t i = 0; finite && i < filter.particlesCount(); i++)
+		finite = !std::isnan(filter.getW(i)) && filter.getW(i) != INFINITY;
+	if (!finite)
+		throw NumericalError("step " + std::to_string(step) +
+			": the filter's state is no longer finite (NaN or infinite weight, pose or covariance); " +
+			likelyNumericalCause(params));
+}
 }  // namespace
 
-int CVSlamApp::run()
+/** Everything one run keeps between its steps. */
+struct CVSlamApp::RunState
 {
-	// Validate inputs before touching the output folder: a bad rawlog or
-	// ground-truth file leaves earlier outputs intact.
-	CRawlogReader reader(m_rawlogFile);
-	Trajectory groundTruth;
-	if (!m_groundTruthFile.empty()) groundTruth = readTrajectory(m_groundTruthFile);
-	LandmarkMap priorMap;
-	if (!m_priorMapFile.empty())
-		priorMap = readLandmarkMap(
-			m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi);
-
-	std::error_code ec;
-	fs::create_directories(m_outputDir, ec);
-	if (!fs::is_directory(m_outputDir))
-		throw InputError("cannot create output folder '" + m_outputDir + "'");
-	const auto out = [&](const char* name) { return (fs::path(m_outputDir) / name).string(); };
-
-	RunSummary summary;
-	summary.configFile = m_configFile;
-	summary.rawlogFile = m_rawlogFile;
-	summary.outputDir = m_outputDir;
-	summary.seed = appOptions.RANDOM_SEED >= 0
-		? static_cast<uint64_t>(appOptions.RANDOM_SEED)
-		: static_cast<uint32_t>(
-			  std::chrono::system_clock::now().time_since_epoch().count());
-	// Seed once, before any draw: MRPT 2.5 does not restart its cached
-	// Gaussian on a reseed, so a later reseed would not repeat a run.
-	mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(summary.seed));
+	RunState(const RunOutputFolder& folder, const TVSlamFilterOptions& options, const std::string& runId)
+		: outputs(folder, runId), filter(options), controllerPose(options.smoothedPose), odo(options.pf.initialPose)
 	{
-		std::ofstream cfg(out("config_used.ini"));
-		std::string text;
-		params.getContent(text);
-		cfg << "; effective configuration of this run (INI + overrides)\n"
-			<< "; random seed used: " << summary.seed << "\n"
-			<< text;
+		pf.m_options = options.pf.toMrpt();
 	}
-
-	// The first step is read before the filter exists: it may set the start.
-	RawlogStep step;
-	bool haveStep = reader.next(step);
-	if (appOptions.initial_pose_from_ground_truth)
-	{
-		if (groundTruth.empty())
-			throw ConfigError("configuration '" + m_configFile +
-				"': initial_pose_from_ground_truth needs [vslam] ground_truth_file");
-		const double t0 = haveStep ? toSeconds(step.timestamp) : groundTruth.front().t;
-		const auto p = interpolate(groundTruth, std::max(t0, groundTruth.front().t), 1e9);
-		filterOptions.pf.initialPose = p ? *p : groundTruth.front().pose;
-		// That is the pose at the first step's time, i.e. after the first
-		// step's odometry increment (which leads up to it): not applied again.
-		step.action.reset();
-	}
-	CVSlamParticleFilter filter(filterOptions);
-	if (!priorMap.empty()) filter.setPriorMap(priorMap);
+	StepOutputs outputs;
+	CVSlamParticleFilter filter;
 	mrpt::bayes::CParticleFilter pf;
-	pf.m_options = filterOptions.pf.toMrpt();
-	CPathFileWriter pathRbpf(out("log_estimated_path.txt"), CPathFileWriter::Format::RbpfSlam);
-	CPathFileWriter pathTum(out("estimated_path.tum"), CPathFileWriter::Format::Tum);
-	CPathFileWriter pathOdo(out("log_odometry_path.txt"), CPathFileWriter::Format::RbpfSlamOdometry);
-	CPathFileWriter pathOdoTum(out("odometry_path.tum"), CPathFileWriter::Format::Tum);
-	CPathFileWriter pathSmoothed(out("smoothed_path.tum"), CPathFileWriter::Format::Tum);
-	CSmoothedPose controllerPose(filterOptions.smoothedPose);  // smoothed_path.tum
-	FILE* stepLog = std::fopen(out("log_filter_steps.txt").c_str(), "wt");
-	if (!stepLog) throw InputError("cannot create output file '" + out("log_filter_steps.txt") + "'");
-	std::fprintf(stepLog,
-		"%% step timestamp ESS dual_ratio dual_particles explained_fraction "
-		"hypothesis_support kidnap_declared landmarks measurements_used step_ms spread_xy spread_phi_deg\n");
-
-	ProgressReporter progress(appOptions.show_progress);
-	InterruptFlag interrupt;
+	CSmoothedPose controllerPose;  // smoothed_path.tum
 	Trajectory estimated, odometry;
-	se2::Pose odo = filterOptions.pf.initialPose;
+	se2::Pose odo;
 	std::unique_ptr<CVisualFrontEnd> frontEnd;
 	RunSummary::FrontEnd frontEndSummary;
 	double firstT = 0, lastT = 0, stepSumMs = 0;
 	bool anyTimed = false;
-	const auto start = std::chrono::steady_clock::now();
-	std::string failure;
-	int exitCode = kOk;
+};
+
+int CVSlamApp::run()
+{
+	// Inputs are opened and checked before the output folder is touched: a
+	// bad rawlog, ground truth or map leaves earlier outputs intact.
+	CRawlogReader reader(m_rawlogFile);
+	// A file named in the INI names its key when it cannot be read.
+	const auto naming = [](const char* key, const auto& read) {
+		try
+		{
+			return read();
+		}
+		catch (const InputError& e)
+		{
+			throw InputError(std::string("[vslam] ") + key + ": " + e.what());
+		}
+	};
+	Trajectory groundTruth;
+	if (!m_groundTruthFile.empty())
+		groundTruth = naming("ground_truth_file", [&] { return readTrajectory(m_groundTruthFile); });
+	LandmarkMap priorMap;
+	if (!m_priorMapFile.empty())
+		priorMap = naming("prior_map_file", [&] {
+			return readLandmarkMap(m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi);
+		});
+	RawlogStep step;  // read before the filter exists: it may set the start
+	bool haveStep = reader.next(step);
+	if (appOptions.initial_pose_from_ground_truth) startFromGroundTruth(groundTruth, haveStep, step);
+
+	RunSummary summary;
+	summary.seed = appOptions.RANDOM_SEED >= 0
+		? static_cast<uint64_t>(appOptions.RANDOM_SEED)
+		: static_cast<uint32_t>(std::chrono::system_clock::now().time_since_epoch().count());
+	// Seed once, before any draw: MRPT 2.5 does not restart its cached
+	// Gaussian on a reseed, so a later reseed would not repeat a run.
+	mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(summary.seed));
+	const RunOutputFolder folder(m_outputDir);
+	const std::string effective = effectiveConfigText(summary.seed, m_outputDir);
+	// Not the output folder: the same run written elsewhere is the same run.
+	summary.runId = makeRunId(effectiveConfigText(summary.seed, ""), m_rawlogFile, summary.seed);
+	summary.configFile = m_configFile;
+	summary.rawlogFile = m_rawlogFile;
+	summary.outputDir = m_outputDir;
+	folder.clearEarlierOutputs();
+	{
+		COutputFile cfg(folder.file("config_used.ini"), COutputFile::Mode::Atomic);
+		cfg.write("; the effective configuration of vslam run " + summary.runId +
+			" (INI, command line, --set; absolute paths, the seed used): `vslam config_used.ini` reruns it\n" +
+			effective);
+		cfg.commit();
+	}
+	summary.write(folder.file("run_summary.yaml"), nullptr);  // status: running
+	folder.reserveSummarySpace();
+
+	std::unique_ptr<RunState> state;
+	std::exception_ptr failure;
 	try
 	{
-		for (; haveStep; haveStep = reader.next(step))
+		state = std::make_unique<RunState>(folder, filterOptions, summary.runId);
+		if (!priorMap.empty()) state->filter.setPriorMap(priorMap);
+		processSteps(*state, reader, step, haveStep, summary);
+		state->outputs.close();
+	}
+	catch (...)
+	{
+		failure = std::current_exception();
+		summary.status = "failed";
+		summary.error = failureText(failure);
+	}
+	if (state)
+	{
+		summarizeReader(reader, *state, summary);
+		try
 		{
-			if (interrupt.raised())
-			{
-				summary.status = "interrupted";
-				exitCode = kInterrupted;
-				break;
-			}
-			const auto t0 = std::chrono::steady_clock::now();
-			se2::Pose stepIncrement{0, 0, 0};
-			if (step.action)
-				if (const auto u = odometryIncrement(*step.action))
-					stepIncrement = u->asTPose(), odo = se2::compose(odo, stepIncrement);
-			if (hasImages(*step.sf))
-			{
-				// Camera images: the front-end turns them into measurements.
-				if (!frontEnd) frontEnd = std::make_unique<CVisualFrontEnd>(frontEndOptions);
-				const auto r = replaceImagesWithMeasurements(*frontEnd, *step.sf,
-					mrpt::poses::CPose2D(odo.x, odo.y, odo.phi),
-					"rawlog '" + m_rawlogFile + "', entry " + std::to_string(step.entry));
-				frontEndSummary.images += r.images;
-				frontEndSummary.measurements += r.measurements;
-				frontEndSummary.created += r.created;
-				frontEndSummary.pruned += r.pruned;
-			}
-			try
-			{
-				pf.executeOn(filter, step.action.get(), step.sf.get());
-			}
-			catch (const std::exception& e)
-			{
-				// Bad data found by the filter arrives wrapped by MRPT.
-				const std::string why = filter.takeInputError();
-				if (why.empty()) throw;
-				throw InputError("rawlog '" + m_rawlogFile + "', entry " + std::to_string(step.entry) + ": " + why);
-			}
-			const double ms = std::chrono::duration<double, std::milli>(
-								  std::chrono::steady_clock::now() - t0).count();
-			stepSumMs += ms;
-			summary.stepMaxMs = std::max(summary.stepMaxMs, ms);
-
-			// A step without a timestamp (e.g. an empty last frame) keeps the
-			// previous step's, so the TUM output stays ordered.
-			const bool timed = step.timestamp != INVALID_TIMESTAMP;
-			const double t = timed ? toSeconds(step.timestamp) : lastT;
-			const double dt = anyTimed ? t - lastT : 0;
-			if (timed && !anyTimed) firstT = t;
-			anyTimed = anyTimed || timed;
-			lastT = t;
-			const se2::Pose est = filter.meanPose();
-			pathRbpf.write(summary.steps, t, est);
-			pathTum.write(summary.steps, t, est);
-			pathOdo.write(summary.steps, t, odo);
-			pathOdoTum.write(summary.steps, t, odo);
-			const long stepIndex = static_cast<long>(summary.steps);
-			estimated.push_back({t, est, stepIndex});
-			odometry.push_back({t, odo, stepIndex});
-			const auto& fr = filter.lastFrame();
-			const bool updated = fr.timestamp == step.timestamp && filter.stats().frames > 0;
-			pathSmoothed.write(summary.steps, t,
-				controllerPose.update(stepIncrement, dt, est, updated && (fr.kidnapDeclared || fr.kidnapReverted)));
-			// The particle cloud's spread: weighted standard deviation of the
-			// position (sqrt of the covariance's trace) and of the heading.
-			const Eigen::Matrix3d cov = filter.poseCovariance();
-			std::fprintf(stepLog, "%llu %.6f %.4f %.3f %zu %.4f %zu %d %zu %zu %.4f %.4f %.3f\n",
-				static_cast<unsigned long long>(summary.steps), t, filter.ESS(),
-				updated ? fr.dualRatio : 0.0, updated ? fr.dualParticles : size_t(0),
-				updated ? fr.explainedFraction : 0.0, updated ? fr.hypothesisSupport : size_t(0),
-				!updated ? 0 : fr.kidnapDeclared ? 1 : fr.kidnapReverted ? -1 : 0, filter.landmarkIndex().size(),
-				updated ? fr.used : size_t(0), ms, std::sqrt(std::max(0.0, cov(0, 0) + cov(1, 1))),
-				std::sqrt(std::max(0.0, cov(2, 2))) * 180 / M_PI);
-			std::fflush(stepLog);
-			summary.steps++;
-			progress.update(reader.progress(), summary.steps, filter.landmarkIndex().size(),
-				filter.ESS());
-			if (appOptions.max_steps > 0 && summary.steps >= appOptions.max_steps) break;
+			writeFinalOutputs(folder, *state, groundTruth, summary);
+		}
+		catch (...)
+		{
+			if (!failure) failure = std::current_exception(), summary.status = "failed", summary.error = failureText(failure);
 		}
 	}
-	catch (const InputError& e)
+	if (summary.status == "running") summary.status = "completed";
+	summary.peakMemoryMiB = peakMemoryMiB();
+	folder.releaseSummarySpace();
+	summary.write(folder.file("run_summary.yaml"), state ? &state->filter : nullptr);
+	if (state) std::cerr << summary.brief(state->filter);
+	if (!summary.groundTruthWarning.empty()) std::cerr << "vslam: warning: " << summary.groundTruthWarning << "\n";
+	std::cerr << "vslam: outputs in " << m_outputDir << "/\n";
+	if (failure) std::rethrow_exception(failure);
+	return summary.status == "interrupted" ? kInterrupted : kOk;
+}
+
+void CVSlamApp::startFromGroundTruth(const Trajectory& groundTruth, bool haveStep, RawlogStep& step)
+{
+	if (groundTruth.empty())
+		throw ConfigError("configuration '" + m_configFile +
+			"': initial_pose_from_ground_truth needs [vslam] ground_truth_file");
+	const double t0 = haveStep && step.timestamp != INVALID_TIMESTAMP ? toSeconds(step.timestamp) : groundTruth.front().t;
+	// The truth must span the rawlog's start: another run's truth would put
+	// the robot somewhere it never was.
+	const auto p = interpolate(groundTruth, t0, 1e9);
+	if (!p && std::abs(t0 - groundTruth.front().t) > 1.0)
+		throw ConfigError("[vslam] ground_truth_file '" + m_groundTruthFile + "' spans times " +
+			std::to_string(groundTruth.front().t) + " to " + std::to_string(groundTruth.back().t) +
+			" s, but rawlog '" + m_rawlogFile + "' starts at " + std::to_string(t0) +
+			" s: it is not this rawlog's ground truth (initial_pose_from_ground_truth needs it)");
+	filterOptions.pf.initialPose = p ? *p : groundTruth.front().pose;
+	// That is the pose at the first step's time, i.e. after the first
+	// step's odometry increment (which leads up to it): not applied again.
+	step.action.reset();
+}
+
+std::string CVSlamApp::effectiveConfigText(uint64_t seed, const std::string& outputDir) const
+{
+	// Every key as read (directives expanded, overrides applied), with the
+	// command line's files and the seed used, paths made absolute.
+	const auto absolute = [](const std::string& p) { return p.empty() ? p : fs::absolute(p).lexically_normal().string(); };
+	const std::map<std::string, std::string> runKeys = {{"rawlog_file", absolute(m_rawlogFile)},
+		{"output_dir", absolute(outputDir)}, {"ground_truth_file", absolute(m_groundTruthFile)},
+		{"prior_map_file", absolute(m_priorMapFile)}, {"RANDOM_SEED", std::to_string(seed)}};
+	std::vector<std::string> sections;
+	params.getAllSections(sections);
+	if (std::find(sections.begin(), sections.end(), TVSlamAppOptions::kSection) == sections.end())
+		sections.insert(sections.begin(), TVSlamAppOptions::kSection);
+	std::ostringstream text;
+	for (const auto& section : sections)
 	{
-		summary.status = "failed";
-		summary.error = failure = e.what();
+		text << "\n[" << section << "]\n";
+		const bool app = section == TVSlamAppOptions::kSection;
+		std::vector<std::string> keys;
+		params.getAllKeys(section, keys);
+		for (const auto& key : keys)
+			if (!app || !runKeys.count(key)) text << key << " = " << config::rawValue(params, section, key) << "\n";
+		if (app)
+			for (const auto& [key, value] : runKeys) text << key << " = " << value << "\n";
+	}
+	return text.str();
+}
+
+void CVSlamApp::processSteps(RunState& r, CRawlogReader& reader, RawlogStep& step, bool haveStep, RunSummary& summary)
+{
+	ProgressReporter progress(appOptions.show_progress);
+	InterruptFlag interrupt;
+	const auto start = std::chrono::steady_clock::now();
+	for (; haveStep; haveStep = reader.next(step))
+	{
+		if (interrupt.raised())
+		{
+			summary.status = "interrupted";
+			break;
+		}
+		processStep(r, step, summary);
+		summary.steps++;
+		progress.update(reader.progress(), summary.steps, r.filter.landmarkIndex().size(), r.filter.ESS());
+		if (appOptions.max_steps > 0 && summary.steps >= appOptions.max_steps) break;
 	}
 	progress.finish();
-	std::fclose(stepLog);
+	summary.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
-	summary.totalSeconds =
-		std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-	summary.stepMeanMs = summary.steps ? stepSumMs / summary.steps : 0;
-	summary.realTimeSpan = lastT - firstT;
+void CVSlamApp::processStep(RunState& r, const RawlogStep& step, RunSummary& summary)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	const std::string entry = "rawlog '" + m_rawlogFile + "', entry " + std::to_string(step.entry);
+	se2::Pose stepIncrement{0, 0, 0};
+	if (step.action)
+		if (const auto u = odometryIncrement(*step.action))
+			stepIncrement = u->asTPose(), r.odo = se2::compose(r.odo, stepIncrement);
+	if (hasImages(*step.sf))
+	{
+		// Camera images: the front-end turns them into measurements.
+		if (!r.frontEnd) r.frontEnd = std::make_unique<CVisualFrontEnd>(frontEndOptions);
+		const auto m = replaceImagesWithMeasurements(
+			*r.frontEnd, *step.sf, mrpt::poses::CPose2D(r.odo.x, r.odo.y, r.odo.phi), entry);
+		r.frontEndSummary.images += m.images;
+		r.frontEndSummary.measurements += m.measurements;
+		r.frontEndSummary.created += m.created;
+		r.frontEndSummary.pruned += m.pruned;
+	}
+	try
+	{
+		r.pf.executeOn(r.filter, step.action.get(), step.sf.get());
+	}
+	catch (const std::exception& e)
+	{
+		// Bad data found by the filter arrives wrapped by MRPT.
+		const std::string why = r.filter.takeInputError();
+		if (why.empty()) throw;
+		throw InputError(entry + ": " + why);
+	}
+	checkFilterIsFinite(r.filter, summary.steps, params);
+	const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+	r.stepSumMs += ms;
+	summary.stepMaxMs = std::max(summary.stepMaxMs, ms);
+
+	// A step without a timestamp (e.g. an empty last frame) keeps the
+	// previous step's, so the TUM output stays ordered.
+	const bool timed = step.timestamp != INVALID_TIMESTAMP;
+	const double t = timed ? toSeconds(step.timestamp) : r.lastT;
+	const double dt = r.anyTimed ? t - r.lastT : 0;
+	if (timed && !r.anyTimed) r.firstT = t;
+	r.anyTimed = r.anyTimed || timed;
+	r.lastT = t;
+	const se2::Pose est = r.filter.meanPose();
+	const auto n = summary.steps;
+	r.outputs.rbpf.write(n, t, est);
+	r.outputs.tum.write(n, t, est);
+	r.outputs.odometry.write(n, t, r.odo);
+	r.outputs.odometryTum.write(n, t, r.odo);
+	r.estimated.push_back({t, est, static_cast<long>(n)});
+	r.odometry.push_back({t, r.odo, static_cast<long>(n)});
+	const auto& fr = r.filter.lastFrame();
+	const bool updated = fr.timestamp == step.timestamp && r.filter.stats().frames > 0;
+	r.outputs.smoothed.write(n, t,
+		r.controllerPose.update(stepIncrement, dt, est, updated && (fr.kidnapDeclared || fr.kidnapReverted)));
+	// The particle cloud's spread: weighted standard deviation of the
+	// position (sqrt of the covariance's trace) and of the heading.
+	const Eigen::Matrix3d cov = r.filter.poseCovariance();
+	r.outputs.stepLog.print("%llu %.6f %.4f %.3f %zu %.4f %zu %d %zu %zu %.4f %.4f %.3f\n",
+		static_cast<unsigned long long>(n), t, r.filter.ESS(), updated ? fr.dualRatio : 0.0,
+		updated ? fr.dualParticles : size_t(0), updated ? fr.explainedFraction : 0.0,
+		updated ? fr.hypothesisSupport : size_t(0), !updated ? 0 : fr.kidnapDeclared ? 1 : fr.kidnapReverted ? -1 : 0,
+		r.filter.landmarkIndex().size(), updated ? fr.used : size_t(0), ms,
+		std::sqrt(std::max(0.0, cov(0, 0) + cov(1, 1))), std::sqrt(std::max(0.0, cov(2, 2))) * 180 / M_PI);
+	r.outputs.stepLog.flush();
+}
+
+void CVSlamApp::summarizeReader(const CRawlogReader& reader, const RunState& r, RunSummary& summary) const
+{
+	summary.stepMeanMs = summary.steps ? r.stepSumMs / summary.steps : 0;
+	summary.realTimeSpan = r.lastT - r.firstT;
 	summary.actionFrameSteps = reader.actionFrameSteps();
 	summary.observationSteps = reader.observationSteps();
 	summary.skippedObjects = reader.skippedObjects();
-	if (frontEnd)
-	{
-		const auto& t = frontEnd->totalSeconds();
-		frontEndSummary.featuresSeconds = t.features;
-		frontEndSummary.searchSeconds = t.search;
-		frontEndSummary.poseSeconds = t.pose;
-		frontEndSummary.creationSeconds = t.creation;
-		frontEndSummary.headingSeconds = t.heading;
-		frontEndSummary.headingChanges = frontEnd->headingChangesMeasured();
-		frontEndSummary.headingChangesFailed = frontEnd->headingChangesFailed();
-		const auto& db = frontEnd->database();
-		frontEndSummary.landmarks = db.size();
-		frontEndSummary.bytesPerLandmark = db.size() ? double(db.landmarkBytes()) / db.size() : 0.0;
-		frontEndSummary.indexBytes = static_cast<double>(db.indexBytes());
-		frontEndSummary.creationAttempts = frontEnd->creationAttempts();
-		frontEndSummary.creationRejections = frontEnd->creationRejections();
-		frontEndSummary.poorlyConditioned = frontEnd->poorlyConditionedRecognitions();
-		frontEndSummary.ambiguous = frontEnd->ambiguousRecognitions();
-		frontEndSummary.narrow = frontEnd->narrowRecognitions();
-		frontEndSummary.inconsistent = frontEnd->inconsistentRecognitions();
-		summary.frontEnd = frontEndSummary;
-	}
+	if (!r.frontEnd) return;
+	const CVisualFrontEnd& fe = *r.frontEnd;
+	RunSummary::FrontEnd e = r.frontEndSummary;
+	const auto& t = fe.totalSeconds();
+	e.featuresSeconds = t.features;
+	e.searchSeconds = t.search;
+	e.poseSeconds = t.pose;
+	e.creationSeconds = t.creation;
+	e.headingSeconds = t.heading;
+	e.headingChanges = fe.headingChangesMeasured();
+	e.headingChangesFailed = fe.headingChangesFailed();
+	const auto& db = fe.database();
+	e.landmarks = db.size();
+	e.bytesPerLandmark = db.size() ? double(db.landmarkBytes()) / db.size() : 0.0;
+	e.indexBytes = static_cast<double>(db.indexBytes());
+	e.creationAttempts = fe.creationAttempts();
+	e.creationRejections = fe.creationRejections();
+	e.poorlyConditioned = fe.poorlyConditionedRecognitions();
+	e.ambiguous = fe.ambiguousRecognitions();
+	e.narrow = fe.narrowRecognitions();
+	e.inconsistent = fe.inconsistentRecognitions();
+	summary.frontEnd = e;
+}
 
-	// Final outputs: also after an error or an interruption.
-	const auto& best = filter.particle(filter.bestParticleIndex());
-	writeLandmarkMap(out("final_map.txt"), filter.landmarkIndex(), best.bank);
+void CVSlamApp::writeFinalOutputs(
+	const RunOutputFolder& folder, const RunState& r, const Trajectory& groundTruth, RunSummary& summary) const
+{
+	// Also after an error or an interruption: what the run got to.
+	const auto& best = r.filter.particle(r.filter.bestParticleIndex());
+	writeLandmarkMap(folder.file("final_map.txt"), r.filter.landmarkIndex(), best.bank, summary.runId);
 	Trajectory smoothed;  // the best particle's path
 	{
-		FILE* f = std::fopen(out("most_likely_path.txt").c_str(), "wt");
+		COutputFile f(folder.file("most_likely_path.txt"), COutputFile::Mode::Atomic);
 		for (const auto& e : best.path.toVector())
 		{
 			smoothed.push_back({toSeconds(e.t), e.pose});
-			if (f) std::fprintf(f, "%.3f %.3f %.3f\n", e.pose.x, e.pose.y, e.pose.phi);
+			f.print("%.3f %.3f %.3f\n", e.pose.x, e.pose.y, e.pose.phi);
 		}
-		if (f) std::fclose(f);
-		writeTumTrajectory(out("most_likely_path.tum"), smoothed);
+		f.commit();
+		writeTumTrajectory(folder.file("most_likely_path.tum"), smoothed, summary.runId);
 	}
 	Trajectory poseGraphPath;  // the loop-closure graph's solution at the end
-	if (const CLandmarkPoseGraph* graph = filter.loopClosureGraph(); graph && graph->keyframes() > 0)
+	if (const CLandmarkPoseGraph* graph = r.filter.loopClosureGraph(); graph && graph->keyframes() > 0)
 	{
 		CLandmarkPoseGraph solved = *graph;
 		solved.optimize();
 		for (const auto& [t, pose] : solved.keyframePath()) poseGraphPath.push_back({toSeconds(t), pose});
-		writeTumTrajectory(out("pose_graph_path.tum"), poseGraphPath);
+		writeTumTrajectory(folder.file("pose_graph_path.tum"), poseGraphPath, summary.runId);
 	}
-	if (!groundTruth.empty())
+	if (groundTruth.empty()) return;
+	summary.ate = computeAte(r.estimated, groundTruth);
+	summary.ateAligned = computeAte(r.estimated, groundTruth, {0.5, true});
+	summary.odometryAte = computeAte(r.odometry, groundTruth);
+	if (!smoothed.empty())
 	{
-		summary.ate = computeAte(estimated, groundTruth);
-		summary.ateAligned = computeAte(estimated, groundTruth, {0.5, true});
-		summary.odometryAte = computeAte(odometry, groundTruth);
-		if (!smoothed.empty())
-		{
-			summary.smoothedAte = computeAte(smoothed, groundTruth);
-			summary.smoothedAteAligned = computeAte(smoothed, groundTruth, {0.5, true});
-		}
-		if (!poseGraphPath.empty()) summary.poseGraphAte = computeAte(poseGraphPath, groundTruth);
+		summary.smoothedAte = computeAte(smoothed, groundTruth);
+		summary.smoothedAteAligned = computeAte(smoothed, groundTruth, {0.5, true});
 	}
-	summary.peakMemoryMiB = peakMemoryMiB();
-	summary.write(out("run_summary.yaml"), filter);
-	std::cerr << summary.brief(filter);
-	std::cerr << "vslam: outputs in " << m_outputDir << "/\n";
-	if (!failure.empty()) throw InputError(failure);
-	return exitCode;
+	if (!poseGraphPath.empty()) summary.poseGraphAte = computeAte(poseGraphPath, groundTruth);
+	checkGroundTruthBelongsToTheRun(r, groundTruth, summary);
+}
+
+void CVSlamApp::checkGroundTruthBelongsToTheRun(const RunState& r, const Trajectory& groundTruth, RunSummary& summary) const
+{
+	if (r.estimated.empty()) return;
+	summary.groundTruthCover = groundTruthCover(r.estimated, groundTruth);
+	const std::string gt = "[vslam] ground_truth_file '" + m_groundTruthFile + "'";
+	if (summary.groundTruthCover == 0)
+		throw ConfigError(gt + " has no pose at any step's time of rawlog '" + m_rawlogFile + "' (it spans " +
+			std::to_string(groundTruth.front().t) + " to " + std::to_string(groundTruth.back().t) + " s, the run " +
+			std::to_string(r.estimated.front().t) + " to " + std::to_string(r.estimated.back().t) +
+			" s): it is not this rawlog's ground truth");
+	char share[64];
+	if (summary.groundTruthCover < 0.95)
+	{
+		std::snprintf(share, sizeof share, "%.1f%%", 100 * summary.groundTruthCover);
+		summary.groundTruthWarning = gt + " covers only " + share + " of the steps; the error figures are over those";
+	}
+	const double disagreement = odometryDisagreement(r.odometry, groundTruth);
+	if (disagreement > 0.2)
+	{
+		std::snprintf(share, sizeof share, "%.0f%%", 100 * disagreement);
+		summary.groundTruthWarning += std::string(summary.groundTruthWarning.empty() ? "" : "; ") +
+			"the odometry disagrees with " + gt + " in " + share +
+			" of the seconds the robot moved: is it this rawlog's ground truth?";
+	}
 }
 
 int CVSlamApp::main(int argc, const char** argv)
@@ -461,6 +656,11 @@ int CVSlamApp::main(int argc, const char** argv)
 	{
 		std::cerr << "vslam: error: " << e.what() << "\n";
 		return kInputError;
+	}
+	catch (const std::bad_alloc&)
+	{
+		std::cerr << "vslam: error: out of memory (a smaller [vslam_particle_filter] sampleSize may fit)\n";
+		return kOtherError;
 	}
 	catch (const std::exception& e)
 	{

@@ -11,15 +11,21 @@
  *   estimated_path.tum       the same in TUM format
  *   log_odometry_path.txt    dead reckoning (rbpf-slam's odometry format)
  *   log_filter_steps.txt     ESS, dual share, kidnap test, landmarks, time
- * and at the end (also after an error or Ctrl-C):
+ * and at the end (also after an error or Ctrl-C), each atomically:
  *   final_map.txt, most_likely_path.txt/.tum, pose_graph_path.tum,
- *   run_summary.yaml,
- *   config_used.ini (the effective configuration).
+ *   run_summary.yaml (also at the start, "status: running").
+ * config_used.ini (the effective configuration, which reruns the run) is
+ * written at the start. Outputs an earlier run left in the folder are
+ * removed first; a failed write is an OutputError (exit 4).
  * main() wraps both with error reporting and exit codes.
  */
 #include <libvslam/app/RunSummary.h>
 #include <libvslam/app/TVSlamAppOptions.h>
+#include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/config/KeyValidation.h>
+#include <libvslam/config/StrictRead.h>
+#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/CRawlogReader.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -61,12 +67,23 @@ class CVSlamApp
 	static std::string defaultConfigText();
 	/** The keys of every vslam section. */
 	static config::KnownKeys knownKeys();
+	/** Every numeric key with its allowed range (as the options read them). */
+	static std::vector<config::NumericKey> numericKeys();
 
    private:
+	struct RunState;
 	std::string m_configFile, m_rawlogFile, m_groundTruthFile, m_priorMapFile, m_outputDir;
 	bool m_quiet = false;
 
 	void loadConfig(const std::string& file, const std::vector<std::string>& overrides);
 	std::string resolveInput(const std::string& path) const;
+	void startFromGroundTruth(const Trajectory& groundTruth, bool haveStep, RawlogStep& step);
+	std::string effectiveConfigText(uint64_t seed, const std::string& outputDir) const;
+	void processSteps(RunState& r, CRawlogReader& reader, RawlogStep& step, bool haveStep, RunSummary& summary);
+	void processStep(RunState& r, const RawlogStep& step, RunSummary& summary);
+	void summarizeReader(const CRawlogReader& reader, const RunState& r, RunSummary& summary) const;
+	void writeFinalOutputs(
+		const RunOutputFolder& folder, const RunState& r, const Trajectory& groundTruth, RunSummary& summary) const;
+	void checkGroundTruthBelongsToTheRun(const RunState& r, const Trajectory& groundTruth, RunSummary& summary) const;
 };
 }  // namespace vslam

@@ -1,8 +1,12 @@
 #include <libvslam/app/RunSummary.h>
 #include <libvslam/core/InputError.h>
+#include <libvslam/io/COutputFile.h>
+#include <libvslam/io/ExceptionText.h>
 #include <sys/resource.h>
 
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 namespace vslam
@@ -16,38 +20,145 @@ double peakMemoryMiB()
 
 namespace
 {
-/** YAML double-quoted scalar. */
-std::string quoted(const std::string& s)
+using mrpt::containers::yaml;
+
+/** A YAML double-quoted scalar of any bytes. MRPT's emitter writes strings
+ * bare, so text from outside (file names, MRPT's error messages with raw
+ * bytes) is quoted here: quotes and backslashes escaped, every byte outside
+ * printable ASCII as \xNN. */
+std::string quotedText(const std::string& s)
 {
 	std::string out = "\"";
-	for (char c : s)
+	for (const unsigned char c : s)
 	{
-		if (c == '"' || c == '\\') out += '\\';
-		if (c == '\n')
+		if (c == '"' || c == '\\')
+			out += '\\', out += static_cast<char>(c);
+		else if (c >= 0x20 && c < 0x7f)
+			out += static_cast<char>(c);
+		else
 		{
-			out += "\\n";
-			continue;
+			char hex[8];
+			std::snprintf(hex, sizeof hex, "\\x%02x", c);
+			out += hex;
 		}
-		out += c;
 	}
 	return out + "\"";
 }
 
-/** A real-time figure, or null when the rawlog's timestamps give none. */
-std::string realTime(double v)
+/** A number, or null when it is not finite (YAML readers disagree on NaN). */
+yaml number(double v) { return std::isfinite(v) ? yaml(v) : yaml(); }
+
+/** Error figures, or null over no associated pose. */
+yaml ateNode(const std::optional<AteStats>& a)
 {
-	if (!(v > 0)) return "null";
-	std::ostringstream o;
-	o << v;
-	return o.str();
+	if (!a || a->associated == 0) return yaml();
+	yaml n = yaml::Map();
+	n["associated_poses"] = static_cast<uint64_t>(a->associated);
+	n["rmse"] = number(a->rmse);
+	n["mean"] = number(a->mean);
+	n["median"] = number(a->median);
+	n["max"] = number(a->max);
+	n["heading_rmse_deg"] = number(a->headingRmse * 180 / M_PI);
+	return n;
 }
 
-void writeAte(std::ostream& o, const char* name, const std::optional<AteStats>& a)
+yaml measurementsNode(const CVSlamParticleFilter& f)
 {
-	if (!a) return;
-	o << "  " << name << ": {associated_poses: " << a->associated << ", rmse: " << a->rmse
-	  << ", mean: " << a->mean << ", median: " << a->median << ", max: " << a->max
-	  << ", heading_rmse_deg: " << a->headingRmse * 180 / M_PI << "}\n";
+	const auto& ex = f.extractor().stats();
+	yaml m = yaml::Map();
+	m["visual_seen"] = ex.visualSeen;
+	m["visual_accepted_by_prefilter"] = ex.visualAccepted;
+	m["range_bearing_seen"] = ex.rangeBearingSeen;
+	m["range_bearing_accepted"] = ex.rangeBearingAccepted;
+	m["heading_changes_seen"] = ex.headingChangesSeen;
+	m["heading_changes_passed"] = ex.headingChangesPassed;
+	m["used_by_filter"] = f.stats().measurementsUsed;
+	yaml r = yaml::Map();
+	r["prefilter_ProjErrRMS"] = ex.rejectedProjErrRMS;
+	r["prefilter_NPoints"] = ex.rejectedNPoints;
+	r["prefilter_Slope"] = ex.rejectedSlope;
+	r["no_landmark_id"] = ex.rejectedNoLandmarkID;
+	r["range_limits"] = ex.rejectedRangeLimits;
+	r["unexplained_by_any_particle"] = f.stats().rejectedUnexplained;
+	m["rejected"] = r;
+	return m;
+}
+
+yaml filterNode(const CVSlamParticleFilter& f)
+{
+	const auto& fs = f.stats();
+	yaml n = yaml::Map();
+	n["frames"] = fs.frames;
+	n["resamplings"] = fs.resamplings;
+	n["dual_particles_drawn"] = fs.dualParticlesDrawn;
+	n["unexplained_frames"] = fs.unexplainedFrames;
+	n["kidnaps_detected"] = fs.kidnapsDetected;
+	n["kidnaps_reverted"] = fs.kidnapsReverted;
+	n["loop_closures"] = fs.loopClosures;
+	n["loop_closure_edges_left_out"] = fs.loopClosureEdgesLeftOut;
+	yaml h = yaml::Map();
+	h["fused"] = fs.headingChangesFused;
+	h["gated"] = fs.headingChangesGated;
+	h["without_reference"] = fs.headingChangesWithoutReference;
+	n["heading_changes"] = h;
+	return n;
+}
+
+yaml landmarksNode(const CVSlamParticleFilter& f)
+{
+	uint64_t pose = 0, point = 0;
+	for (size_t i = 0; i < f.landmarkIndex().size(); i++)
+		(f.landmarkIndex().entry(i).key.kind == LandmarkKind::Pose ? pose : point)++;
+	yaml n = yaml::Map();
+	n["total"] = static_cast<uint64_t>(f.landmarkIndex().size());
+	n["pose"] = pose;
+	n["point"] = point;
+	const auto& ex = f.extractor().stats();
+	const auto& fs = f.stats();
+	yaml e = yaml::Map();
+	e["creations_seen"] = ex.creationsSeen;
+	e["created"] = fs.landmarksCreated;
+	e["created_at_first_sighting"] = fs.landmarksCreatedFromMeasurement;
+	e["reinitialized"] = fs.landmarksReinitialized;
+	e["duplicate_creations"] = fs.duplicateCreations;
+	n["events"] = e;
+	return n;
+}
+
+yaml frontEndNode(const RunSummary::FrontEnd& e)
+{
+	const auto perImage = [&](double seconds) { return e.images ? 1000 * seconds / e.images : 0.0; };
+	yaml n = yaml::Map();
+	n["images"] = e.images;
+	n["measurements"] = e.measurements;
+	n["landmarks_created"] = e.created;
+	n["landmarks_pruned"] = e.pruned;
+	n["landmarks_in_database"] = e.landmarks;
+	n["bytes_per_landmark"] = e.bytesPerLandmark;
+	n["index_bytes"] = e.indexBytes;
+	yaml ms = yaml::Map();
+	ms["features"] = perImage(e.featuresSeconds);
+	ms["search"] = perImage(e.searchSeconds);
+	ms["pose"] = perImage(e.poseSeconds);
+	ms["creation"] = perImage(e.creationSeconds);
+	ms["heading_change"] = perImage(e.headingSeconds);
+	n["ms_per_image"] = ms;
+	yaml h = yaml::Map();
+	h["measured"] = e.headingChanges;
+	h["failed"] = e.headingChangesFailed;
+	n["heading_changes"] = h;
+	yaml r = yaml::Map();
+	r["poorly_conditioned"] = e.poorlyConditioned;
+	r["ambiguous"] = e.ambiguous;
+	r["narrow"] = e.narrow;
+	r["inconsistent"] = e.inconsistent;
+	n["recognitions_not_reported"] = r;
+	n["creation_attempts"] = e.creationAttempts;
+	yaml why;  // null when empty: MRPT cannot read back an empty map
+	if (!e.creationRejections.empty()) why = yaml::Map();
+	for (const auto& [reason, count] : e.creationRejections) why[quotedText(reason)] = count;
+	n["creation_rejected"] = why;
+	return n;
 }
 }  // namespace
 
@@ -56,107 +167,94 @@ double RunSummary::speedUp() const
 	return totalSeconds > 0 ? realTimeSpan / totalSeconds : 0.0;
 }
 
-void RunSummary::write(const std::string& file, const CVSlamParticleFilter& f) const
+mrpt::containers::yaml RunSummary::toYaml(const CVSlamParticleFilter* f) const
 {
-	const auto& fs = f.stats();
-	const auto& ex = f.extractor().stats();
-	size_t pose = 0, point = 0;
-	for (size_t i = 0; i < f.landmarkIndex().size(); i++)
-		(f.landmarkIndex().entry(i).key.kind == LandmarkKind::Pose ? pose : point)++;
-	std::ostringstream o;
-	o << "# vslam run summary\n"
-	  << "status: " << status << "\n";
-	if (!error.empty()) o << "error: " << quoted(error) << "\n";
-	o << "config_file: " << quoted(configFile) << "\n"
-	  << "rawlog_file: " << quoted(rawlogFile) << "\n"
-	  << "output_dir: " << quoted(outputDir) << "\n"
-	  << "random_seed: " << seed << "\n"
-	  << "rawlog:\n"
-	  << "  steps: " << steps << "\n"
-	  << "  action_sensoryframe_steps: " << actionFrameSteps << "\n"
-	  << "  observation_steps: " << observationSteps << "\n"
-	  << "  skipped_objects: " << skippedObjects << "\n"
-	  << "  data_seconds: " << realTime(realTimeSpan) << "\n"
-	  << "particles: " << f.particlesCount() << "\n"
-	  << "landmarks: {total: " << f.landmarkIndex().size() << ", pose: " << pose
-	  << ", point: " << point << "}\n"
-	  << "measurements:\n"
-	  << "  visual_seen: " << ex.visualSeen << "\n"
-	  << "  visual_accepted_by_prefilter: " << ex.visualAccepted << "\n"
-	  << "  range_bearing_seen: " << ex.rangeBearingSeen << "\n"
-	  << "  range_bearing_accepted: " << ex.rangeBearingAccepted << "\n"
-	  << "  heading_changes_seen: " << ex.headingChangesSeen << "\n"
-	  << "  heading_changes_passed: " << ex.headingChangesPassed << "\n"
-	  << "  used_by_filter: " << fs.measurementsUsed << "\n"
-	  << "  rejected:\n"
-	  << "    prefilter_ProjErrRMS: " << ex.rejectedProjErrRMS << "\n"
-	  << "    prefilter_NPoints: " << ex.rejectedNPoints << "\n"
-	  << "    prefilter_Slope: " << ex.rejectedSlope << "\n"
-	  << "    no_landmark_id: " << ex.rejectedNoLandmarkID << "\n"
-	  << "    range_limits: " << ex.rejectedRangeLimits << "\n"
-	  << "    unexplained_by_any_particle: " << fs.rejectedUnexplained << "\n"
-	  << "landmark_events:\n"
-	  << "  creations_seen: " << ex.creationsSeen << "\n"
-	  << "  created: " << fs.landmarksCreated << "\n"
-	  << "  created_at_first_sighting: " << fs.landmarksCreatedFromMeasurement << "\n"
-	  << "  reinitialized: " << fs.landmarksReinitialized << "\n"
-	  << "  duplicate_creations: " << fs.duplicateCreations << "\n"
-	  << "filter:\n"
-	  << "  frames: " << fs.frames << "\n"
-	  << "  resamplings: " << fs.resamplings << "\n"
-	  << "  dual_particles_drawn: " << fs.dualParticlesDrawn << "\n"
-	  << "  unexplained_frames: " << fs.unexplainedFrames << "\n"
-	  << "  kidnaps_detected: " << fs.kidnapsDetected << "\n"
-	  << "  kidnaps_reverted: " << fs.kidnapsReverted << "\n"
-	  << "  loop_closures: " << fs.loopClosures << "\n"
-	  << "  loop_closure_edges_left_out: " << fs.loopClosureEdgesLeftOut << "\n"
-	  << "  heading_changes: {fused: " << fs.headingChangesFused << ", gated: " << fs.headingChangesGated
-	  << ", without_reference: " << fs.headingChangesWithoutReference << "}\n"
-	  << "timing:\n"
-	  << "  total_seconds: " << totalSeconds << "\n"
-	  << "  step_mean_ms: " << stepMeanMs << "\n"
-	  << "  step_max_ms: " << stepMaxMs << "\n"
-	  << "  faster_than_real_time: " << realTime(speedUp()) << "\n"
-	  << "peak_memory_MiB: " << peakMemoryMiB << "\n";
-	if (frontEnd)
-	{
-		const auto& e = *frontEnd;
-		const auto perImage = [&](double seconds) { return e.images ? 1000 * seconds / e.images : 0.0; };
-		o << "front_end:\n"
-		  << "  images: " << e.images << "\n"
-		  << "  measurements: " << e.measurements << "\n"
-		  << "  landmarks_created: " << e.created << "\n"
-		  << "  landmarks_pruned: " << e.pruned << "\n"
-		  << "  landmarks_in_database: " << e.landmarks << "\n"
-		  << "  bytes_per_landmark: " << e.bytesPerLandmark << "\n"
-		  << "  index_bytes: " << e.indexBytes << "\n"
-		  << "  ms_per_image: {features: " << perImage(e.featuresSeconds) << ", search: "
-		  << perImage(e.searchSeconds) << ", pose: " << perImage(e.poseSeconds)
-		  << ", creation: " << perImage(e.creationSeconds) << ", heading_change: " << perImage(e.headingSeconds) << "}\n"
-		  << "  heading_changes: {measured: " << e.headingChanges << ", failed: " << e.headingChangesFailed << "}\n"
-		  << "  recognitions_not_reported: {poorly_conditioned: " << e.poorlyConditioned
-		  << ", ambiguous: " << e.ambiguous << ", narrow: " << e.narrow
-		  << ", inconsistent: " << e.inconsistent << "}\n"
-		  << "  creation_attempts: " << e.creationAttempts << "\n"
-		  << "  creation_rejected:";
-		if (e.creationRejections.empty()) o << " {}";
-		o << "\n";
-		for (const auto& [why, count] : e.creationRejections) o << "    \"" << why << "\": " << count << "\n";
-	}
+	yaml y = yaml::Map();
+	y["status"] = status;
+	if (!error.empty()) y["error"] = quotedText(error);
+	y["run_id"] = quotedText(runId);
+	y["config_file"] = quotedText(configFile);
+	y["rawlog_file"] = quotedText(rawlogFile);
+	y["output_dir"] = quotedText(outputDir);
+	y["random_seed"] = seed;
+	if (!f) return y;  // the start of a run
+	yaml r = yaml::Map();
+	r["steps"] = steps;
+	r["action_sensoryframe_steps"] = actionFrameSteps;
+	r["observation_steps"] = observationSteps;
+	r["skipped_objects"] = skippedObjects;
+	r["data_seconds"] = realTimeSpan > 0 ? yaml(realTimeSpan) : yaml();
+	y["rawlog"] = r;
+	y["particles"] = static_cast<uint64_t>(f->particlesCount());
+	y["landmarks"] = landmarksNode(*f);
+	y["measurements"] = measurementsNode(*f);
+	y["filter"] = filterNode(*f);
+	yaml t = yaml::Map();
+	t["total_seconds"] = totalSeconds;
+	t["step_mean_ms"] = stepMeanMs;
+	t["step_max_ms"] = stepMaxMs;
+	t["faster_than_real_time"] = speedUp() > 0 ? yaml(speedUp()) : yaml();
+	y["timing"] = t;
+	y["peak_memory_MiB"] = peakMemoryMiB;
+	if (frontEnd) y["front_end"] = frontEndNode(*frontEnd);
 	if (ate || odometryAte)
 	{
-		o << "error_vs_ground_truth_m:\n";
-		writeAte(o, "vslam", ate);
-		writeAte(o, "vslam_se2_aligned", ateAligned);
-		writeAte(o, "most_likely_path", smoothedAte);
-		writeAte(o, "most_likely_path_se2_aligned", smoothedAteAligned);
-		writeAte(o, "pose_graph_path", poseGraphAte);
-		writeAte(o, "dead_reckoning", odometryAte);
+		yaml e = yaml::Map();
+		e["ground_truth_cover"] = number(groundTruthCover);
+		if (!groundTruthWarning.empty()) e["warning"] = quotedText(groundTruthWarning);
+		e["vslam"] = ateNode(ate);
+		e["vslam_se2_aligned"] = ateNode(ateAligned);
+		e["most_likely_path"] = ateNode(smoothedAte);
+		e["most_likely_path_se2_aligned"] = ateNode(smoothedAteAligned);
+		e["pose_graph_path"] = ateNode(poseGraphAte);
+		e["dead_reckoning"] = ateNode(odometryAte);
+		y["error_vs_ground_truth_m"] = e;
 	}
-	FILE* out = std::fopen(file.c_str(), "wt");
-	if (!out) throw InputError("cannot create output file '" + file + "'");
-	std::fputs(o.str().c_str(), out);
-	std::fclose(out);
+	return y;
+}
+
+void RunSummary::write(const std::string& file, const CVSlamParticleFilter* f) const
+{
+	std::ostringstream o;
+	o << "# vslam run summary\n";
+	toYaml(f).printAsYAML(o);
+	COutputFile out(file, COutputFile::Mode::Atomic);
+	out.write(o.str());
+	out.commit();
+}
+
+mrpt::containers::yaml readRunSummary(const std::string& file)
+{
+	std::ifstream in(file);
+	if (!in) throw InputError("cannot read run summary '" + file + "'");
+	try
+	{
+		return yaml::FromStream(in);
+	}
+	catch (const std::exception& e)
+	{
+		throw InputError("run summary '" + file + "' is not valid YAML: " + exceptionText(e));
+	}
+}
+
+double summaryNumber(const mrpt::containers::yaml& node, const std::string& path)
+{
+	if (path.empty())
+	{
+		if (!node.isScalar()) return NAN;
+		try
+		{
+			return node.as<double>();
+		}
+		catch (const std::exception&)
+		{
+			return NAN;  // not a number
+		}
+	}
+	const auto dot = path.find('.');
+	const std::string key = path.substr(0, dot);
+	if (!node.isMap() || !node.has(key)) return NAN;
+	return summaryNumber(node[key], dot == std::string::npos ? "" : path.substr(dot + 1));
 }
 
 std::string RunSummary::brief(const CVSlamParticleFilter& f) const
@@ -169,11 +267,12 @@ std::string RunSummary::brief(const CVSlamParticleFilter& f) const
 	  << " reverted), " << totalSeconds << " s for "
 	  << realTimeSpan << " s of data (" << speedUp() << "x real time), peak memory "
 	  << peakMemoryMiB << " MiB\n";
-	if (ate)
+	if (ate && ate->associated == 0) o << "vslam: ATE vs ground truth: no step has a ground-truth pose\n";
+	if (ate && ate->associated > 0)
 		o << "vslam: ATE vs ground truth: RMSE " << ate->rmse << " m, mean " << ate->mean
 		  << " m, median " << ate->median << " m, max " << ate->max << " m ("
 		  << ate->associated << " poses)\n";
-	if (odometryAte)
+	if (odometryAte && odometryAte->associated > 0)
 		o << "vslam: dead reckoning:      RMSE " << odometryAte->rmse << " m, mean "
 		  << odometryAte->mean << " m, median " << odometryAte->median << " m\n";
 	return o.str();

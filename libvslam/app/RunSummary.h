@@ -2,9 +2,13 @@
 /** \file RunSummary.h
  * The run summary (run_summary.yaml): what was processed, what was
  * accepted and rejected by which rule, kidnaps, timing, memory, and errors
- * against ground truth when given. Valid YAML, so scripts can read it. */
+ * against ground truth when given. Built and read as an
+ * mrpt::containers::yaml document, text from outside (file names, error
+ * messages) quoted and escaped, so any YAML reader parses it; written
+ * atomically. An error figure over no pose is null, never 0. */
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
+#include <mrpt/containers/yaml.h>
 
 #include <map>
 #include <optional>
@@ -14,9 +18,15 @@ namespace vslam
 {
 struct RunSummary
 {
-	std::string status = "completed";  //!< completed | interrupted | failed
+	std::string status = "running";  //!< running | completed | interrupted | failed
 	std::string error;  //!< when failed
+	std::string runId;  //!< also in the header of the output files
 	std::string configFile, rawlogFile, outputDir;
+	/** Share of the run's steps the ground truth covers (when given), and
+	 * what the user should know about it (partial cover, odometry that
+	 * disagrees with it). */
+	double groundTruthCover = 0;
+	std::string groundTruthWarning;
 	uint64_t seed = 0;
 	uint64_t steps = 0, actionFrameSteps = 0, observationSteps = 0, skippedObjects = 0;
 	double totalSeconds = 0, stepMeanMs = 0, stepMaxMs = 0;
@@ -48,11 +58,22 @@ struct RunSummary
 
 	/** Data seconds per processing second (0: unknown). */
 	double speedUp() const;
-	/** Writes the summary with the filter's counters. */
-	void write(const std::string& file, const CVSlamParticleFilter& filter) const;
+	/** The summary as a document; with the filter's counters if given (none
+	 * yet at the start of a run). */
+	mrpt::containers::yaml toYaml(const CVSlamParticleFilter* filter) const;
+	/** Writes toYaml() atomically; throws OutputError. */
+	void write(const std::string& file, const CVSlamParticleFilter* filter) const;
 	/** A few human-readable lines for the console. */
 	std::string brief(const CVSlamParticleFilter& filter) const;
 };
+
+/** Reads a run_summary.yaml; throws InputError naming the file if it is
+ * missing or not YAML. */
+mrpt::containers::yaml readRunSummary(const std::string& file);
+
+/** A number at a dotted path of a summary ("filter.kidnaps_detected"), or
+ * NaN if absent or null. */
+double summaryNumber(const mrpt::containers::yaml& summary, const std::string& path);
 
 /** Peak resident memory of this process so far (MiB). */
 double peakMemoryMiB();

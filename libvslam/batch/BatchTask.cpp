@@ -1,3 +1,4 @@
+#include <libvslam/app/RunSummary.h>
 #include <libvslam/batch/BatchTask.h>
 #include <libvslam/batch/ProcessRun.h>
 #include <libvslam/core/InputError.h>
@@ -34,13 +35,6 @@ std::string readText(const std::string& file)
 {
 	std::ifstream in(file);
 	return {std::istreambuf_iterator<char>(in), {}};
-}
-
-/** The value after "key: " in a YAML-ish summary, or NaN. */
-double yamlNumber(const std::string& yaml, const std::string& key)
-{
-	const auto at = yaml.find(key + ": ");
-	return at == std::string::npos ? NAN : std::atof(yaml.c_str() + at + key.size() + 2);
 }
 
 /** Bumped whenever the metrics change: finished runs are then scored again
@@ -121,11 +115,11 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	m["kidnaps_recovered_10s"] = recovered;
 	m["kidnaps_recovered_10s_to_prior_level"] = recoveredToLevel;
 	if (kidnaps > 0) m["recovery_s_worst"] = worst, m["recovery_s_worst_to_prior_level"] = worstToLevel;
-	const std::string yaml = readText(out + "/run_summary.yaml");
-	m["kidnaps_declared"] = yamlNumber(yaml, "kidnaps_detected");
-	m["kidnaps_reverted"] = yamlNumber(yaml, "kidnaps_reverted");
-	m["landmarks"] = yamlNumber(yaml, "total");
-	m["data_s"] = yamlNumber(yaml, "data_seconds");
+	const auto summary = readRunSummary(out + "/run_summary.yaml");
+	m["kidnaps_declared"] = summaryNumber(summary, "filter.kidnaps_detected");
+	m["kidnaps_reverted"] = summaryNumber(summary, "filter.kidnaps_reverted");
+	m["landmarks"] = summaryNumber(summary, "landmarks.total");
+	m["data_s"] = summaryNumber(summary, "rawlog.data_seconds");
 	m["wall_s"] = wallSeconds;
 	m["peak_mib"] = peakMiB;
 	m["real_time_factor"] = wallSeconds > 0 ? m["data_s"] / wallSeconds : NAN;

@@ -91,8 +91,9 @@ TEST(VslamSimul, BadScenarioFilesEndInOneClearError)
 	file("typo.world", room + "picture 1 0.05 2 0.05 1 1.6 backgrounds/mate/nature/Gardn.jpg\n");
 	file("empty.world", "# nothing here\nceiling_height 2.5\n");
 	const auto run = [&](const std::string& world, const std::string& extra) {
+		const std::string start = extra.find("start_pose") == std::string::npos ? "start_pose = 1 1 0\n" : "";
 		const std::string ini = file("s.ini",
-			"[vslam_simul]\nworld_file = " + world + "\nduration = 5\nstart_pose = 1 1 0\n" + extra);
+			"[vslam_simul]\nworld_file = " + world + "\nduration = 5\n" + start + extra);
 		return runCommand(kBin + "vslam-simul '" + ini + "' '" + (dir.path() / "out.rawlog").string() + "' --quiet");
 	};
 	struct Case

@@ -1,6 +1,7 @@
 /** The vslam app as users run it: the built binary on real files, checked
  * by exit code, message and output files. */
 #include <gtest/gtest.h>
+#include <libvslam/app/RunSummary.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
 #include <libvslam/io/CRawlogReader.h>
@@ -51,14 +52,10 @@ std::string truncatedDemo(const TempDir& dir, double fraction)
 	return file;
 }
 
-/** "rmse: X" of the given line of run_summary.yaml ("vslam", "dead_reckoning"). */
+/** The RMSE of one path in run_summary.yaml ("vslam", "dead_reckoning"). */
 double summaryRmse(const std::string& summaryFile, const std::string& name)
 {
-	const std::string s = readFile(summaryFile);
-	const size_t line = s.find("  " + name + ": {");
-	if (line == std::string::npos) return NAN;
-	const size_t r = s.find("rmse: ", line);
-	return std::stod(s.substr(r + 6));
+	return summaryNumber(readRunSummary(summaryFile), "error_vs_ground_truth_m." + name + ".rmse");
 }
 }  // namespace
 
@@ -205,7 +202,9 @@ TEST(VslamApp, LocalizesInAPriorMapFromAWrongStart)
 		quoted(dir.file("rb_landmarks.txt")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const std::string summary = readFile(dir.file("o/run_summary.yaml"));
-	EXPECT_TRUE(contains(summary, "landmarks: {total: 20, pose: 0, point: 20}")) << summary;
+	const auto parsed = readRunSummary(dir.file("o/run_summary.yaml"));
+	EXPECT_EQ(summaryNumber(parsed, "landmarks.total"), 20) << summary;
+	EXPECT_EQ(summaryNumber(parsed, "landmarks.point"), 20) << summary;
 	EXPECT_TRUE(contains(summary, "created_at_first_sighting: 0")) << summary;
 	EXPECT_FALSE(contains(summary, "kidnaps_detected: 0")) << summary;
 	const Trajectory est = readRbpfSlamPath(dir.file("o/log_estimated_path.txt"));

@@ -6,6 +6,11 @@
 
 namespace vslam::testing
 {
+/** Checks every run_summary.yaml under `dir`. Linked only into the test
+ * binaries that run vslam (tests/support/RunSummaryCheck.cpp), so that every
+ * summary the test suite produces is parsed before its folder goes. */
+void checkRunSummariesUnder(const std::filesystem::path& dir) __attribute__((weak));
+
 class TempDir
 {
    public:
@@ -19,6 +24,7 @@ class TempDir
 	}
 	~TempDir()
 	{
+		if (checkRunSummariesUnder) checkRunSummariesUnder(m_path);
 		std::error_code ec;
 		std::filesystem::remove_all(m_path, ec);
 	}
