@@ -375,6 +375,13 @@ int CVSlamApp::run()
 		processSteps(*state, reader, step, haveStep, summary);
 		state->outputs.close();
 	}
+	catch (const std::bad_alloc&)
+	{
+		failure = std::current_exception();
+		summary.status = "failed";
+		summary.error = failureText(failure);
+		state.reset();  // the particles' memory, for the summary to be written
+	}
 	catch (...)
 	{
 		failure = std::current_exception();

@@ -349,3 +349,19 @@ TEST(Reliability, EverySummaryOfACorruptRawlogCorpusIsYaml)
 	}
 	EXPECT_GE(failed, 12u) << "too few corruptions were caught: the corpus checks too little";
 }
+
+TEST(Reliability, OutOfMemoryEndsWithExitFourAndTheSummarySayingSo)
+{
+	if (!std::string(VSLAM_SANITIZER_RUNTIME).empty())
+		GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no memory limit fits it";
+	if (!fs::exists(kKfDemoRawlog)) GTEST_SKIP() << "MRPT's kf-slam demo rawlog is absent (package mrpt-common)";
+	TempDir dir;
+	// 100,000 particles with MRPT's range-bearing demo's 70 landmarks need
+	// over 1 GB; the process gets 600 MB of address space.
+	const auto r = runCommand("ulimit -v 600000; " + q(kVslam) + " " + q(kSource + "/config_ini/kfslam_demo_range_bearing.ini") +
+		" --quiet --out " + q(dir.file("o")) + " --set vslam_particle_filter.sampleSize=100000 --set vslam.max_steps=20");
+	EXPECT_EQ(r.exitCode, 4) << r.output;
+	EXPECT_TRUE(contains(r.output, "out of memory")) << r.output;
+	EXPECT_EQ(summaryText(dir.file("o"), "status"), "failed");
+	EXPECT_EQ(summaryText(dir.file("o"), "error"), "out of memory");
+}
