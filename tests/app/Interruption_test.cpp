@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
@@ -22,6 +23,7 @@ using vslam::testing::lineCount;
 using vslam::testing::quoted;
 using vslam::testing::runCommand;
 using vslam::testing::TempDir;
+namespace fs = std::filesystem;
 
 namespace
 {
@@ -173,4 +175,36 @@ TEST(Interruption, KilledRunsLeaveParseableOutputsUpToTheKill)
 		EXPECT_GE(rows, steps);
 	}
 	EXPECT_GE(stopped, 7) << "runs ended before the kill: the test checked too little";
+}
+
+TEST(Interruption, ARerunIntoTheFolderOfAKilledRunHoldsOnlyItsOwnOutputs)
+{
+	TempDir dir;
+	const std::string rawlog = longRawlog(dir);
+	const std::string out = dir.file("o");
+	// A first run that completes, then one killed in the same folder.
+	const std::string ini = kSource + "/config_ini/kfslam_demo_range_bearing.ini";
+	const auto first = runCommand(quoted(kBin + "vslam") + " " + quoted(ini) + " " + quoted(rawlog) + " --out " + quoted(out) +
+		" --quiet --set vslam_particle_filter.sampleSize=20 --set vslam.max_steps=300");
+	ASSERT_EQ(first.exitCode, 0) << first.output;
+	const std::string firstId = vslam::readRunSummary(out + "/run_summary.yaml")["run_id"].as<std::string>();
+	const StoppedRun killed = runAndStop(rawlog, out, 1000, SIGKILL);
+	if (killed.finishedFirst) GTEST_SKIP() << "the run ended before the kill";
+	const auto summary = vslam::readRunSummary(out + "/run_summary.yaml");
+	EXPECT_EQ(summary["status"].as<std::string>(), "running") << "the killed run's own summary";
+	const std::string killedId = summary["run_id"].as<std::string>();
+	EXPECT_NE(killedId, firstId);
+	// Nothing of the completed run is left to pass for the killed one's.
+	for (const char* f : {"final_map.txt", "most_likely_path.txt", "most_likely_path.tum", "pose_graph_path.tum"})
+		EXPECT_FALSE(fs::exists(out + "/" + f)) << f;
+	EXPECT_NE(readFile(out + "/estimated_path.tum").find(killedId), std::string::npos);
+	EXPECT_GT(checkPaths(out, 1000), 300u);
+	// The rerun completes and names itself everywhere.
+	const auto rerun = runCommand(quoted(kBin + "vslam") + " " + quoted(ini) + " " + quoted(rawlog) + " --out " + quoted(out) +
+		" --quiet --set vslam_particle_filter.sampleSize=20 --set vslam.max_steps=200");
+	ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
+	const std::string rerunId = vslam::readRunSummary(out + "/run_summary.yaml")["run_id"].as<std::string>();
+	for (const char* f : {"estimated_path.tum", "final_map.txt", "log_filter_steps.txt", "config_used.ini"})
+		EXPECT_NE(readFile(out + "/" + f).find(rerunId), std::string::npos) << f;
+	EXPECT_EQ(checkPaths(out, 200), 200u);
 }
