@@ -76,7 +76,7 @@ StoppedRun runAndStop(const std::string& rawlog, const std::string& out, size_t 
 			r.finishedFirst = true;
 			break;
 		}
-		if (lineCount(out + "/log_filter_steps.txt") > steps)
+		if (lineCount(out + "/log_filter_steps.txt") > steps + 1)  // two header lines
 		{
 			kill(pid, sig);
 			break;
