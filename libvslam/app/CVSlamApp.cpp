@@ -21,6 +21,7 @@
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/LandmarkMapFile.h>
+#include <libvslam/io/RunScene.h>
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -313,6 +314,23 @@ struct CVSlamApp::RunState
 	bool anyTimed = false;
 };
 
+namespace
+{
+/** What SceneViewer3D shows of the run: its paths and the best particle's map. */
+RunSceneContent sceneOf(const Trajectory& estimated, const Trajectory& odometry, const Trajectory& groundTruth,
+	const CLandmarkIndex& index, const LandmarkBank& bank)
+{
+	RunSceneContent c{estimated, odometry, groundTruth, {}};
+	for (size_t slot = 0; slot < bank.size(); slot++)
+	{
+		const auto& l = bank[slot];
+		c.landmarks.push_back({{l.mean[0], l.mean[1], l.mean[2]}, l.cov.topLeftCorner<2, 2>(),
+			index.entry(slot).key.kind == LandmarkKind::Pose});
+	}
+	return c;
+}
+}  // namespace
+
 int CVSlamApp::run()
 {
 	// Inputs are opened and checked before the output folder is touched: a
@@ -601,7 +619,14 @@ void CVSlamApp::writeFinalOutputs(
 		solved.optimize();
 		for (const auto& [t, pose] : solved.keyframePath()) poseGraphPath.push_back({toSeconds(t), pose});
 		writeTumTrajectory(folder.file("pose_graph_path.tum"), poseGraphPath, summary.runId);
+		std::ostringstream text;  // for graph-slam --view -i
+		solved.toMrptGraph().writeAsText(text);
+		COutputFile g(folder.file("pose_graph.graph"), COutputFile::Mode::Atomic);
+		g.write(text.str());
+		g.commit();
 	}
+	writeRunScene(folder.file("final_map.3Dscene"),
+		sceneOf(r.estimated, r.odometry, groundTruth, r.filter.landmarkIndex(), best.bank));
 	if (groundTruth.empty()) return;
 	summary.ate = computeAte(r.estimated, groundTruth);
 	summary.ateAligned = computeAte(r.estimated, groundTruth, {0.5, true});

@@ -35,6 +35,7 @@
 #include <libvslam/models/COdometryAccumulator.h>
 #include <libvslam/models/LandmarkTypes.h>
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/system/datetime.h>
 
 #include <optional>
@@ -115,6 +116,10 @@ class CLandmarkPoseGraph
 	std::vector<std::pair<mrpt::Clock::time_point, se2::Pose>> keyframePath() const;
 
 	size_t keyframes() const { return m_keyframeNodes.size(); }
+	/** The graph as MRPT's network of poses (keyframes and landmarks as
+	 * nodes, the edges in use with their information; node 0, the start, is
+	 * the root): `graph-slam --view -i` shows its saveToTextFile(). */
+	mrpt::graphs::CNetworkOfPoses2DInf toMrptGraph() const;
 	size_t edges() const { return m_edges.size(); }
 	size_t nodes() const { return m_nodes.size(); }
 

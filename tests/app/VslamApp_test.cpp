@@ -5,11 +5,16 @@
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/eval/AbsoluteTrajectoryError.h>
 #include <libvslam/io/CRawlogReader.h>
+#include <libvslam/io/LandmarkMapFile.h>
 #include <libvslam/obs/registerClasses.h>
+#include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/opengl/CEllipsoid2D.h>
+#include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CSetOfLines.h>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
 
@@ -69,7 +74,8 @@ TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	for (const char* f : {"log_estimated_path.txt", "estimated_path.tum", "log_odometry_path.txt",
 			 "log_filter_steps.txt", "final_map.txt", "most_likely_path.txt",
-			 "most_likely_path.tum", "pose_graph_path.tum", "run_summary.yaml", "config_used.ini"})
+			 "most_likely_path.tum", "pose_graph_path.tum", "run_summary.yaml", "config_used.ini", "final_map.3Dscene",
+			 "pose_graph.graph"})
 		EXPECT_TRUE(fs::exists(dir.file("out/") + f)) << f;
 	// rbpf-slam's format: one row per step, 8 columns.
 	const Trajectory est = readRbpfSlamPath(dir.file("out/log_estimated_path.txt"));
@@ -437,4 +443,38 @@ TEST(VslamApp, PrintedDefaultConfigurationRunsAsIs)
 	const auto r = runCommand(quoted(kVslam) + " " + quoted(dir.file("default.ini")) + " " + quoted(kDemoRawlog) +
 		" --quiet --out " + quoted(dir.file("o")) + " --set vslam.max_steps=50");
 	EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+TEST(VslamApp, WritesASceneAndAPoseGraphThatMrptsOwnReadersOpen)
+{
+	TempDir dir;
+	ASSERT_EQ(runDemo("--out " + quoted(dir.file("o")) + " --set vslam.max_steps=1500").exitCode, 0);
+	// final_map.3Dscene, as SceneViewer3D loads it.
+	mrpt::opengl::COpenGLScene scene;
+	ASSERT_TRUE(scene.loadFromFile(dir.file("o/final_map.3Dscene")));
+	size_t ellipses = 0, estimateSegments = 0, truthSegments = 0;
+	for (const auto& obj : *scene.getViewport())
+	{
+		if (std::dynamic_pointer_cast<mrpt::opengl::CEllipsoid2D>(obj)) ellipses++;
+		if (const auto lines = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(obj))
+		{
+			if (lines->getName() == "estimate") estimateSegments = lines->size();
+			if (lines->getName() == "ground truth") truthSegments = lines->size();
+		}
+	}
+	EXPECT_EQ(ellipses, readLandmarkMap(dir.file("o/final_map.txt"), 0, 0).size());
+	EXPECT_GT(ellipses, 5u);
+	EXPECT_EQ(estimateSegments, 1499u);  // one per step after the first
+	EXPECT_GT(truthSegments, 1000u);
+	// pose_graph.graph, as graph-slam reads it.
+	mrpt::graphs::CNetworkOfPoses2DInf graph;
+	graph.loadFromTextFile(dir.file("o/pose_graph.graph"));
+	EXPECT_GT(graph.nodes.size(), readTrajectory(dir.file("o/pose_graph_path.tum")).size());  // keyframes + landmarks
+	EXPECT_GE(graph.edgeCount(), graph.nodes.size() - 1);
+	if (fs::exists("/usr/bin/graph-slam"))
+	{
+		const auto info = runCommand("graph-slam --2d --info -i " + quoted(dir.file("o/pose_graph.graph")));
+		EXPECT_TRUE(contains(info.output, "Nodes count (in VERTEX2/3 entries) : " + std::to_string(graph.nodes.size())))
+			<< info.output;
+	}
 }

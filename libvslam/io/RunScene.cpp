@@ -1,0 +1,81 @@
+#include <libvslam/core/OutputError.h>
+#include <libvslam/io/RunScene.h>
+#include <mrpt/opengl/CEllipsoid2D.h>
+#include <mrpt/opengl/CGridPlaneXY.h>
+#include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CSetOfLines.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace vslam
+{
+namespace
+{
+mrpt::opengl::CSetOfLines::Ptr pathLines(const Trajectory& path, const mrpt::img::TColor& colour, const std::string& name)
+{
+	auto lines = mrpt::opengl::CSetOfLines::Create();
+	lines->setName(name);
+	lines->setColor_u8(colour);
+	lines->setLineWidth(2);
+	for (size_t i = 1; i < path.size(); i++)
+		lines->appendLine(path[i - 1].pose.x, path[i - 1].pose.y, 0, path[i].pose.x, path[i].pose.y, 0);
+	return lines;
+}
+
+/** A grid under everything the run saw, 1 m cells. */
+mrpt::opengl::CGridPlaneXY::Ptr floorGrid(const RunSceneContent& c)
+{
+	double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+	const auto extend = [&](double x, double y) {
+		x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+	};
+	for (const Trajectory* path : {&c.estimated, &c.odometry, &c.truth})
+		for (const auto& p : *path) extend(p.pose.x, p.pose.y);
+	for (const auto& l : c.landmarks) extend(l.pose.x, l.pose.y);
+	return mrpt::opengl::CGridPlaneXY::Create(
+		std::floor(x0) - 1, std::ceil(x1) + 1, std::floor(y0) - 1, std::ceil(y1) + 1, 0, 1);
+}
+}  // namespace
+
+void writeRunScene(const std::string& file, const RunSceneContent& c)
+{
+	mrpt::opengl::COpenGLScene scene;
+	scene.insert(floorGrid(c));
+	scene.insert(pathLines(c.odometry, {200, 0, 0}, "odometry"));
+	if (!c.truth.empty()) scene.insert(pathLines(c.truth, {0, 160, 0}, "ground truth"));
+	scene.insert(pathLines(c.estimated, {0, 0, 220}, "estimate"));
+	auto headings = mrpt::opengl::CSetOfLines::Create();
+	headings->setName("landmark headings");
+	headings->setColor_u8({0, 0, 0});
+	for (const auto& l : c.landmarks)
+	{
+		auto ellipse = mrpt::opengl::CEllipsoid2D::Create();
+		ellipse->setCovMatrixAndMean(l.positionCov, Eigen::Vector2d(l.pose.x, l.pose.y));
+		ellipse->setQuantiles(2);  // 2 sigma
+		ellipse->setColor_u8({0, 0, 0});
+		scene.insert(ellipse);
+		if (l.hasHeading)
+			headings->appendLine(l.pose.x, l.pose.y, 0, l.pose.x + 0.3 * std::cos(l.pose.phi),
+				l.pose.y + 0.3 * std::sin(l.pose.phi), 0);
+	}
+	scene.insert(headings);
+	const std::string tmp = file + ".tmp";
+	errno = 0;
+	if (!scene.saveToFile(tmp))
+	{
+		const int error = errno;
+		std::remove(tmp.c_str());
+		throw OutputError("cannot write output file '" + file + "'" + (error ? std::string(": ") + std::strerror(error) : ""));
+	}
+	if (std::rename(tmp.c_str(), file.c_str()) != 0)
+	{
+		const int error = errno;
+		std::remove(tmp.c_str());
+		throw OutputError("cannot replace output file '" + file + "': " + std::strerror(error));
+	}
+}
+}  // namespace vslam
