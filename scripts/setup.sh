@@ -77,6 +77,30 @@ build() {
   cmake --build "$BUILD" -j "$JOBS"
 }
 
+# The Debian package as a user installs it: built with CPack, installed
+# with dpkg (every dependency must already be there: the build needed
+# them), and the installed vslam run on the installed demo. Root only (CI
+# is); the package stays installed.
+check_debian_package() {
+  if [[ $EUID -ne 0 ]]; then
+    echo "[setup] not root: not installing the .deb"
+    return
+  fi
+  echo "[setup] building and installing the Debian package"
+  (cd "$BUILD" && rm -f vslam_*.deb && cpack -G DEB > cpack.log)
+  local deb
+  deb="$(ls "$BUILD"/vslam_*.deb)"
+  dpkg -i "$deb" > /dev/null
+  local out
+  out="$(mktemp -d)"
+  (cd "$out" && /usr/bin/vslam /usr/share/vslam/config_ini/demo_visual.ini --out run --quiet \
+    --set vslam.max_steps=300)
+  grep -q '^status: completed' "$out/run/run_summary.yaml" ||
+    { echo "[setup] error: the installed vslam did not complete the installed demo" >&2; exit 1; }
+  echo "[setup] $(basename "$deb"): installed, /usr/bin/vslam ran the installed demo"
+  rm -rf "$out"
+}
+
 install_packages
 build
 case "$MODE" in
@@ -100,6 +124,7 @@ case "$MODE" in
   test)
     echo "[setup] running all tests"
     ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS"
+    check_debian_package
     if [[ "${VSLAM_SKIP_SANITIZED:-0}" == 1 ]]; then
       echo "[setup] VSLAM_SKIP_SANITIZED=1: not running the tests under ASan + UBSan"
       exit 0
