@@ -63,7 +63,9 @@ if [[ -d "$MRCLAM" ]]; then
 fi
 cp "$ROOT"/tests/fuzz/seeds/mrclam/* "$SEEDS/fuzz_mrclam/"
 for ini in "$ROOT"/config_ini/simul_{example,demo,living_room,apartment,kidnap,dynamic}.ini; do
-  world="$ROOT/config_ini/$(grep -m1 '^world_file' "$ini" | sed 's/.*= *//')"
+  world_file="$(grep -m1 '^world_file' "$ini" | sed 's/.*= *//' || true)"
+  [[ -z "$world_file" ]] && continue  # a generated home (world_seed): no world file to pair it with
+  world="$ROOT/config_ini/$world_file"
   { cat "$ini"; printf '%%%%%%%%\n'; cat "$world"; } > "$SEEDS/fuzz_scenario/$(basename "$ini" .ini).txt"
 done
 
