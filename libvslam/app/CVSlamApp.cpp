@@ -367,25 +367,16 @@ int CVSlamApp::run()
 	// Gaussian on a reseed, so a later reseed would not repeat a run.
 	mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(summary.seed));
 	const RunOutputFolder folder(m_outputDir);
-	const std::string effective = effectiveConfigText(summary.seed, m_outputDir);
-	// Not the output folder: the same run written elsewhere is the same run.
-	summary.runId = makeRunId(effectiveConfigText(summary.seed, ""), m_rawlogFile, summary.seed);
-	summary.configFile = m_configFile;
-	summary.rawlogFile = m_rawlogFile;
-	summary.outputDir = m_outputDir;
-	folder.clearEarlierOutputs();
-	{
-		COutputFile cfg(folder.file("config_used.ini"), COutputFile::Mode::Atomic);
-		cfg.write("; the effective configuration of vslam run " + summary.runId +
-			" (INI, command line, --set; absolute paths, the seed used): `vslam config_used.ini` reruns it\n" +
-			effective);
-		cfg.commit();
-	}
-	summary.write(folder.file("run_summary.yaml"), nullptr);  // status: running
-	folder.reserveSummarySpace();
+	startOutputs(folder, summary);
 
 	std::unique_ptr<RunState> state;
 	std::exception_ptr failure;
+	const auto fail = [&](std::exception_ptr e) {
+		if (failure) return;  // the first failure is the one to report
+		failure = e;
+		summary.status = "failed";
+		summary.error = failureText(failure);
+	};
 	try
 	{
 		state = std::make_unique<RunState>(folder, filterOptions, summary.runId);
@@ -395,16 +386,12 @@ int CVSlamApp::run()
 	}
 	catch (const std::bad_alloc&)
 	{
-		failure = std::current_exception();
-		summary.status = "failed";
-		summary.error = failureText(failure);
+		fail(std::current_exception());
 		state.reset();  // the particles' memory, for the summary to be written
 	}
 	catch (...)
 	{
-		failure = std::current_exception();
-		summary.status = "failed";
-		summary.error = failureText(failure);
+		fail(std::current_exception());
 	}
 	if (state)
 	{
@@ -415,7 +402,7 @@ int CVSlamApp::run()
 		}
 		catch (...)
 		{
-			if (!failure) failure = std::current_exception(), summary.status = "failed", summary.error = failureText(failure);
+			fail(std::current_exception());
 		}
 	}
 	if (summary.status == "running") summary.status = "completed";
@@ -427,6 +414,23 @@ int CVSlamApp::run()
 	std::cerr << "vslam: outputs in " << m_outputDir << "/\n";
 	if (failure) std::rethrow_exception(failure);
 	return summary.status == "interrupted" ? kInterrupted : kOk;
+}
+
+void CVSlamApp::startOutputs(const RunOutputFolder& folder, RunSummary& summary) const
+{
+	// Not the output folder: the same run written elsewhere is the same run.
+	summary.runId = makeRunId(effectiveConfigText(summary.seed, ""), m_rawlogFile, summary.seed);
+	summary.configFile = m_configFile;
+	summary.rawlogFile = m_rawlogFile;
+	summary.outputDir = m_outputDir;
+	folder.clearEarlierOutputs();
+	COutputFile cfg(folder.file("config_used.ini"), COutputFile::Mode::Atomic);
+	cfg.write("; the effective configuration of vslam run " + summary.runId +
+		" (INI, command line, --set; absolute paths, the seed used): `vslam config_used.ini` reruns it\n" +
+		effectiveConfigText(summary.seed, m_outputDir));
+	cfg.commit();
+	summary.write(folder.file("run_summary.yaml"), nullptr);  // status: running
+	folder.reserveSummarySpace();
 }
 
 void CVSlamApp::startFromGroundTruth(const Trajectory& groundTruth, bool haveStep, RawlogStep& step)

@@ -79,6 +79,9 @@ class CVSlamApp
 	std::string resolveInput(const std::string& path) const;
 	void startFromGroundTruth(const Trajectory& groundTruth, bool haveStep, RawlogStep& step);
 	std::string effectiveConfigText(uint64_t seed, const std::string& outputDir) const;
+	/** Clears the folder, names the run, writes config_used.ini and the
+	 * first summary (status: running). */
+	void startOutputs(const RunOutputFolder& folder, RunSummary& summary) const;
 	void processSteps(RunState& r, CRawlogReader& reader, RawlogStep& step, bool haveStep, RunSummary& summary);
 	void processStep(RunState& r, const RawlogStep& step, RunSummary& summary);
 	void summarizeReader(const CRawlogReader& reader, const RunState& r, RunSummary& summary) const;
