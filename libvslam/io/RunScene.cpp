@@ -1,10 +1,10 @@
 #include <libvslam/core/OutputError.h>
 #include <libvslam/io/RunScene.h>
-#include <mrpt/opengl/CEllipsoid2D.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -23,6 +23,28 @@ mrpt::opengl::CSetOfLines::Ptr pathLines(const Trajectory& path, const mrpt::img
 	lines->setLineWidth(2);
 	for (size_t i = 1; i < path.size(); i++)
 		lines->appendLine(path[i - 1].pose.x, path[i - 1].pose.y, 0, path[i].pose.x, path[i].pose.y, 0);
+	return lines;
+}
+
+/** A landmark's 2-sigma position ellipse as a closed line. (MRPT 2.5's
+ * CEllipsoid2D is constructed misaligned by make_shared: UBSan stops on it.) */
+mrpt::opengl::CSetOfLines::Ptr ellipseLines(const se2::Pose& at, const Eigen::Matrix2d& cov)
+{
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(cov);
+	const Eigen::Vector2d radii = 2 * eigen.eigenvalues().cwiseMax(0).cwiseSqrt();
+	auto lines = mrpt::opengl::CSetOfLines::Create();
+	lines->setName("landmark");
+	lines->setColor_u8({0, 0, 0});
+	constexpr int kSegments = 36;
+	Eigen::Vector2d previous;
+	for (int i = 0; i <= kSegments; i++)
+	{
+		const double a = 2 * M_PI * i / kSegments;
+		const Eigen::Vector2d p = Eigen::Vector2d(at.x, at.y) +
+			eigen.eigenvectors() * Eigen::Vector2d(radii[0] * std::cos(a), radii[1] * std::sin(a));
+		if (i > 0) lines->appendLine(previous.x(), previous.y(), 0, p.x(), p.y(), 0);
+		previous = p;
+	}
 	return lines;
 }
 
@@ -53,11 +75,7 @@ void writeRunScene(const std::string& file, const RunSceneContent& c)
 	headings->setColor_u8({0, 0, 0});
 	for (const auto& l : c.landmarks)
 	{
-		auto ellipse = mrpt::opengl::CEllipsoid2D::Create();
-		ellipse->setCovMatrixAndMean(l.positionCov, Eigen::Vector2d(l.pose.x, l.pose.y));
-		ellipse->setQuantiles(2);  // 2 sigma
-		ellipse->setColor_u8({0, 0, 0});
-		scene.insert(ellipse);
+		scene.insert(ellipseLines(l.pose, l.positionCov));
 		if (l.hasHeading)
 			headings->appendLine(l.pose.x, l.pose.y, 0, l.pose.x + 0.3 * std::cos(l.pose.phi),
 				l.pose.y + 0.3 * std::sin(l.pose.phi), 0);

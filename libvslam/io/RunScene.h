@@ -2,7 +2,7 @@
 /** \file RunScene.h
  * A run as MRPT's 3-D viewer shows it: final_map.3Dscene (SceneViewer3D)
  * with the estimated, odometry and (when given) true paths as lines, each
- * landmark with its 2-sigma position ellipse, and pose landmarks with a
+ * landmark with its 2-sigma position ellipse (a closed line), and pose landmarks with a
  * tick along their heading. Colours as in vslam-eval's figures: estimate
  * blue, truth green, odometry red, landmarks black. Written atomically.
  */

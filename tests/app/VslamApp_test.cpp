@@ -12,7 +12,6 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
-#include <mrpt/opengl/CEllipsoid2D.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
 #include <tests/support/RunCommand.h>
@@ -455,9 +454,9 @@ TEST(VslamApp, WritesASceneAndAPoseGraphThatMrptsOwnReadersOpen)
 	size_t ellipses = 0, estimateSegments = 0, truthSegments = 0;
 	for (const auto& obj : *scene.getViewport())
 	{
-		if (std::dynamic_pointer_cast<mrpt::opengl::CEllipsoid2D>(obj)) ellipses++;
 		if (const auto lines = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(obj))
 		{
+			if (lines->getName() == "landmark") ellipses++;
 			if (lines->getName() == "estimate") estimateSegments = lines->size();
 			if (lines->getName() == "ground truth") truthSegments = lines->size();
 		}
