@@ -35,9 +35,8 @@ RunOutputFolder::RunOutputFolder(std::string dir) : m_dir(std::move(dir))
 		throw OutputError("cannot write to output folder '" + m_dir + "': permission denied");
 }
 
-std::vector<std::string> RunOutputFolder::clearEarlierOutputs() const
+void RunOutputFolder::clearEarlierOutputs() const
 {
-	std::vector<std::string> removed;
 	for (const auto& name : outputNames())
 		for (const std::string& candidate : {name, name + ".tmp"})
 		{
@@ -45,9 +44,7 @@ std::vector<std::string> RunOutputFolder::clearEarlierOutputs() const
 			if (!fs::exists(file(candidate), ec)) continue;
 			if (!fs::remove(file(candidate), ec))
 				throw OutputError("cannot remove the earlier run's '" + file(candidate) + "': " + ec.message());
-			removed.push_back(candidate);
 		}
-	return removed;
 }
 
 void RunOutputFolder::reserveSummarySpace() const

@@ -20,9 +20,9 @@ class RunOutputFolder
 	 * written. */
 	explicit RunOutputFolder(std::string dir);
 
-	/** Removes what an earlier run left; returns the names removed. Throws
-	 * OutputError if one cannot be removed. */
-	std::vector<std::string> clearEarlierOutputs() const;
+	/** Removes what an earlier run left; throws OutputError if a file
+	 * cannot be removed. */
+	void clearEarlierOutputs() const;
 
 	/** Sets aside disk space for the summary (best effort): a disk that
 	 * fills up during the run still gets the summary saying so. */

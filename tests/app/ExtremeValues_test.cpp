@@ -4,9 +4,7 @@
 #include <gtest/gtest.h>
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/config/StrictRead.h>
-#include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/obs/registerClasses.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
 
@@ -25,17 +23,6 @@ namespace
 {
 const bool kRegistered = (vslam::registerObservationClasses(), true);
 const std::string kSource = VSLAM_SOURCE_DIR;
-
-/** Every numeric key vslam reads, with its range, as the options record it. */
-std::vector<config::NumericKey> numericKeys()
-{
-	config::NumericKeyRecorder recorder;
-	const mrpt::config::CConfigFileMemory none;
-	TVSlamAppOptions().loadFromConfigFile(none, TVSlamAppOptions::kSection);
-	TVSlamFilterOptions().loadFromConfig(none);
-	TVisualFrontEndOptions().loadFromConfigFile(none, TVisualFrontEndOptions::kSection);
-	return recorder.keys();
-}
 
 std::string text(double v)
 {
@@ -108,7 +95,7 @@ std::string nonFiniteOutput(const std::string& dir)
 TEST(ExtremeValues, EveryNumericKeyAtAndBeyondItsLimitsEndsAsDocumented)
 {
 	const std::string rawlogs[] = {kSource + "/rawlogs/demo_visual.rawlog", "/usr/share/mrpt/datasets/kf-slam_demo.rawlog"};
-	const auto keys = numericKeys();
+	const auto keys = CVSlamApp::numericKeys();
 	ASSERT_GT(keys.size(), 60u);
 	TempDir dir;
 	size_t cases = 0, rejected = 0, ran = 0, stoppedNonFinite = 0;
