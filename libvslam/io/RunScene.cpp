@@ -1,15 +1,17 @@
 #include <libvslam/core/OutputError.h>
+#include <libvslam/io/COutputFile.h>
 #include <libvslam/io/RunScene.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/io/zip.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
+#include <vector>
 
 namespace vslam
 {
@@ -81,19 +83,16 @@ void writeRunScene(const std::string& file, const RunSceneContent& c)
 				l.pose.y + 0.3 * std::sin(l.pose.phi), 0);
 	}
 	scene.insert(headings);
-	const std::string tmp = file + ".tmp";
-	errno = 0;
-	if (!scene.saveToFile(tmp))
-	{
-		const int error = errno;
-		std::remove(tmp.c_str());
-		throw OutputError("cannot write output file '" + file + "'" + (error ? std::string(": ") + std::strerror(error) : ""));
-	}
-	if (std::rename(tmp.c_str(), file.c_str()) != 0)
-	{
-		const int error = errno;
-		std::remove(tmp.c_str());
-		throw OutputError("cannot replace output file '" + file + "': " + std::strerror(error));
-	}
+	// Serialized and gzipped as COpenGLScene::saveToFile does, then written
+	// through the checked writer (saveToFile reports no reason for a failure).
+	mrpt::io::CMemoryStream serialized;
+	mrpt::serialization::archiveFrom(serialized) << scene;
+	const auto* bytes = static_cast<const uint8_t*>(serialized.getRawBufferData());
+	std::vector<uint8_t> gz;
+	if (!mrpt::io::zip::compress_gz_data_block({bytes, bytes + serialized.getTotalBytesCount()}, gz, 1))
+		throw OutputError("cannot compress output file '" + file + "'");
+	COutputFile out(file, COutputFile::Mode::Atomic);
+	out.write(std::string(gz.begin(), gz.end()));
+	out.commit();
 }
 }  // namespace vslam
