@@ -4,6 +4,8 @@
  *   vslam-batch BATCH.ini --list-tasks     one shell command per task, renders
  *                                          first: for a cluster's job array
  *   vslam-batch BATCH.ini --task ID        run one task (what a listed line does)
+ *   vslam-batch BATCH.ini --slurm DIR [--submit]
+ *                                          the batch as Slurm job arrays (SlurmSubmission.h)
  *   vslam-batch BATCH.ini --summary        the summary of what is done so far
  *
  * Each also takes --set SECTION.KEY=VALUE (repeatable): a change to the
@@ -13,6 +15,8 @@
 #include <libvslam/batch/BatchRunner.h>
 #include <libvslam/batch/BatchSummary.h>
 #include <libvslam/batch/BatchTask.h>
+#include <libvslam/batch/ListedTasks.h>
+#include <libvslam/batch/SlurmSubmission.h>
 #include <libvslam/config/ConfigError.h>
 
 #include <filesystem>
@@ -26,6 +30,10 @@ const char* kUsage =
 	"       vslam-batch BATCH.ini --list-tasks  print one command per task (renders first)\n"
 	"       vslam-batch BATCH.ini --task ID     run one task\n"
 	"       vslam-batch BATCH.ini --summary     write the summary of the finished runs\n"
+	"       vslam-batch BATCH.ini --slurm DIR [--submit]\n"
+	"                                           write the batch as Slurm job arrays into DIR\n"
+	"                                           (submit.sh, tasks.txt; [slurm] keys: resources),\n"
+	"                                           and with --submit submit them with sbatch\n"
 	"Each takes --set SECTION.KEY=VALUE (repeatable) to change a key of the batch file:\n"
 	"  --set 'grid.vslam_prefilter.max_Slope=0.02 0.1'  a grid axis, added or replaced\n"
 	"  --set grid.KEY=                                 a grid axis left out\n"
@@ -33,21 +41,15 @@ const char* kUsage =
 	"The batch file names scenarios, seeds and a grid of vslam settings; see\n"
 	"config_ini/batches/ and doc/experiments.md. Outputs: OUTPUT_DIR/<scenario>/<variation>/seed<N>/,\n"
 	"OUTPUT_DIR/summary.{md,csv} and summary_ate.png.\n"
-	"Exit codes: 0 ok, 1 usage, 2 batch or vslam configuration error, 3 some task failed.\n";
+	"Exit codes: 0 ok, 1 usage, 2 batch or vslam configuration error, 3 some task or the submission failed.\n";
 
-/** \a s as one shell word. */
-std::string quoted(const std::string& s)
-{
-	std::string q = "'";
-	for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-	return q + "'";
-}
 }  // namespace
 
 int main(int argc, const char** argv)
 {
 	using namespace vslam::batch;
-	std::string batchFile, taskId, mode = "run";
+	std::string batchFile, taskId, slurmDir, mode = "run";
+	bool submit = false;
 	std::vector<std::string> overrides;
 	int jobs = -1;
 	for (int i = 1; i < argc; i++)
@@ -62,6 +64,10 @@ int main(int argc, const char** argv)
 			mode = a.substr(2);
 		else if (a == "--task" && i + 1 < argc)
 			mode = "task", taskId = argv[++i];
+		else if (a == "--slurm" && i + 1 < argc)
+			mode = "slurm", slurmDir = argv[++i];
+		else if (a == "--submit")
+			submit = true;
 		else if (a == "--set" && i + 1 < argc)
 			overrides.push_back(argv[++i]);
 		else if (a == "--jobs" && i + 1 < argc)
@@ -82,6 +88,11 @@ int main(int argc, const char** argv)
 		else
 			batchFile = a;
 	}
+	if (submit && mode != "slurm")
+	{
+		std::cerr << "vslam-batch: error: --submit goes with --slurm DIR\n" << kUsage;
+		return 1;
+	}
 	if (batchFile.empty())
 	{
 		std::cerr << kUsage;
@@ -95,9 +106,14 @@ int main(int argc, const char** argv)
 		std::filesystem::create_directories(plan.outputDir);
 		if (mode == "list-tasks")
 		{
-			std::string command = quoted(binDir + "/vslam-batch") + " " + quoted(std::filesystem::absolute(batchFile).string());
-			for (const auto& o : plan.overrides) command += " --set " + quoted(o);
-			for (const auto& t : plan.tasks) std::cout << command << " --task " << quoted(t.id) << "\n";
+			for (const auto& line : listedTaskCommands(plan, binDir)) std::cout << line << "\n";
+			return 0;
+		}
+		if (mode == "slurm")
+		{
+			const SlurmSubmission submission = writeSlurmSubmission(plan, binDir, slurmDir);
+			std::cout << submission.describe();
+			if (submit) submitSlurmSubmission(submission, std::cout);
 			return 0;
 		}
 		if (mode == "task")

@@ -8,6 +8,7 @@
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
+#include <libvslam/core/AllottedCpus.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/core/NumericalError.h>
 #include <libvslam/core/OutputError.h>
@@ -673,6 +674,7 @@ void CVSlamApp::checkGroundTruthBelongsToTheRun(const RunState& r, const Traject
 int CVSlamApp::main(int argc, const char** argv)
 {
 	keepImageBuffersInTheProcess();
+	useOnlyAllottedCpus();
 	try
 	{
 		if (!initialize(argc, argv)) return kOk;

@@ -1,5 +1,6 @@
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
+#include <libvslam/core/AllottedCpus.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/ExceptionText.h>
 
@@ -8,6 +9,7 @@
 
 int vslam::runTool(const std::string& tool, const std::string& usage, const std::function<int()>& body)
 {
+	useOnlyAllottedCpus();
 	try
 	{
 		return body();

@@ -3,6 +3,7 @@
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
+#include <libvslam/core/AllottedCpus.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -12,7 +13,6 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
-#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -107,7 +107,8 @@ class BatchFile
 		std::vector<config::Override> applied;
 		for (const auto& o : overrides)
 		{
-			if (o.section != "grid" && std::find(fileSections.begin(), fileSections.end(), o.section) == fileSections.end())
+			const bool addable = o.section == "grid" || o.section == "slurm";  // optional sections
+			if (!addable && std::find(fileSections.begin(), fileSections.end(), o.section) == fileSections.end())
 				throw ConfigError("override '" + o.text() + "': batch '" + file + "' has no section [" + o.section + "]");
 			if (o.section == "grid" && o.value.empty())
 			{
@@ -148,6 +149,27 @@ class BatchFile
 		return m_cfg.read_string(section, key, "", false);
 	}
 
+	/** A whole number in [lo, hi], or \a absent if the key is not there. */
+	int wholeNumber(const std::string& section, const std::string& key, int lo, int hi, int absent) const
+	{
+		const std::string value = text(section, key);
+		if (value.empty()) return absent;
+		size_t used = 0;
+		long n = 0;
+		try
+		{
+			n = std::stol(value, &used);
+		}
+		catch (const std::exception&)
+		{
+			used = 0;
+		}
+		if (used != value.size()) throw ConfigError(where(section, key) + ": '" + value + "' is not a whole number");
+		if (n < lo || n > hi)
+			throw ConfigError(where(section, key) + ": must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+		return int(n);
+	}
+
 	/** A path relative to the batch file's folder, made absolute; must
 	 * exist if asked. */
 	std::string path(const std::string& section, const std::string& key, bool mustExist) const
@@ -182,6 +204,23 @@ class BatchFile
 	mrpt::config::CConfigFileMemory m_cfg;
 	std::set<std::string> m_droppedGridKeys;
 };
+
+/** The [slurm] section: what vslam-batch --slurm asks of the cluster. */
+SlurmSettings readSlurmSettings(const BatchFile& f)
+{
+	f.onlyKeys("slurm", {"cpus_per_task", "mem_mib", "time_minutes", "throttle", "max_array_size", "partition", "account",
+							"sbatch_options"});
+	SlurmSettings s;
+	s.cpusPerTask = f.wholeNumber("slurm", "cpus_per_task", 1, 1024, 1);
+	s.memMiB = f.wholeNumber("slurm", "mem_mib", 0, 1 << 24, 0);
+	s.timeMinutes = f.wholeNumber("slurm", "time_minutes", 0, 60 * 24 * 365, 0);
+	s.throttle = f.wholeNumber("slurm", "throttle", 0, 1 << 20, 0);
+	s.maxArraySize = f.wholeNumber("slurm", "max_array_size", 0, 1 << 22, 0);
+	s.partition = f.text("slurm", "partition");
+	s.account = f.text("slurm", "account");
+	for (const auto& option : words(f.text("slurm", "sbatch_options"))) s.sbatchOptions.push_back(option);
+	return s;
+}
 
 /** Loads the variation's vslam configuration exactly as vslam would: an
  * unknown key or a bad value is found before anything runs. */
@@ -286,28 +325,18 @@ BatchPlan loadBatchPlan(const std::string& batchFile, const std::vector<std::str
 	}
 	const BatchFile f(batchFile, parsed);
 	for (const auto& section : f.sections())
-		if (section != "batch" && section != "grid" && section.rfind(kScenarioPrefix, 0) != 0)
+		if (section != "batch" && section != "grid" && section != "slurm" && section.rfind(kScenarioPrefix, 0) != 0)
 			throw ConfigError("batch '" + batchFile + "': unknown section [" + section +
-				"] (expected [batch], [grid] and [scenario:NAME] sections)");
+				"] (expected [batch], [grid], [slurm] and [scenario:NAME] sections)");
 
 	f.onlyKeys("batch", {"output_dir", "seeds", "jobs", "vslam_ini", "set", "rbpf_slam_ini"});
 	plan.rbpfSlamIni = f.path("batch", "rbpf_slam_ini", true);
 	plan.outputDir = f.path("batch", "output_dir", false);
 	if (plan.outputDir.empty()) throw ConfigError(f.where("batch", "output_dir") + ": missing");
 	plan.seeds = parseSeeds(f.text("batch", "seeds"), f.where("batch", "seeds"));
-	const std::string jobs = f.text("batch", "jobs");
-	try
-	{
-		size_t used = 0;
-		plan.jobs = jobs.empty() ? 0 : std::stoi(jobs, &used);
-		if (!jobs.empty() && used != jobs.size()) throw std::invalid_argument(jobs);
-	}
-	catch (const std::exception&)
-	{
-		throw ConfigError(f.where("batch", "jobs") + ": '" + jobs + "' is not a whole number");
-	}
-	if (plan.jobs < 0 || plan.jobs > 1024) throw ConfigError(f.where("batch", "jobs") + ": must be in [0, 1024]");
-	if (plan.jobs == 0) plan.jobs = int(std::max(1u, std::thread::hardware_concurrency()));
+	plan.jobs = f.wholeNumber("batch", "jobs", 0, 1024, 0);
+	if (plan.jobs == 0) plan.jobs = allottedCpus();  // within a cluster allocation: what it was given
+	plan.slurm = readSlurmSettings(f);
 	const std::string defaultVslamIni = f.path("batch", "vslam_ini", true);
 	const auto batchSet = words(f.text("batch", "set"), ';');
 

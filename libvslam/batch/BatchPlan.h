@@ -23,6 +23,11 @@
  *                                        ; (keys in alphabetical order, the first varying slowest;
  *                                        ; each in a folder named by a hash of its settings)
  *
+ *   [slurm]                              ; optional: vslam-batch --slurm (SlurmSubmission.h)
+ *   cpus_per_task = 1   mem_mib = 0   time_minutes = 0   ; 0: from the finished tasks' needs
+ *   throttle = 0   max_array_size = 0    ; array tasks at a time (0: no limit); 0: the cluster's
+ *   partition =   account =   sbatch_options = --qos=low   ; passed to every sbatch
+ *
  * The plan is the list of tasks: rendering each simulated scenario once per
  * seed, rbpf-slam on each rendered rawlog (if asked), then one vslam run
  * per scenario, variation and seed. */
@@ -68,6 +73,18 @@ struct Task
 	std::string dir;  //!< its output folder
 };
 
+/** What the batch asks of a Slurm cluster ([slurm]); see SlurmSubmission.h. */
+struct SlurmSettings
+{
+	int cpusPerTask = 1;
+	int memMiB = 0;  //!< per task; 0: measured (or a default when nothing is measured)
+	int timeMinutes = 0;  //!< per task; 0: measured (or a default)
+	int throttle = 0;  //!< array tasks running at a time (the %N of --array); 0: no limit
+	int maxArraySize = 0;  //!< the cluster's MaxArraySize; 0: ask scontrol (1001 if it cannot tell)
+	std::string partition, account;
+	std::vector<std::string> sbatchOptions;
+};
+
 struct BatchPlan
 {
 	std::string batchFile, outputDir;
@@ -76,6 +93,7 @@ struct BatchPlan
 	std::vector<std::string> overrides;
 	std::vector<int> seeds;
 	int jobs = 0;
+	SlurmSettings slurm;
 	/** rbpf-slam's configuration (its peers' runs are scored beside vslam's), or empty. */
 	std::string rbpfSlamIni;
 	std::vector<Scenario> scenarios;

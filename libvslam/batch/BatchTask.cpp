@@ -313,7 +313,11 @@ TaskOutcome runTask(const BatchPlan& plan, const Task& task, const std::string& 
 		}
 	}
 	else
+	{
+		// What a rendering needed: vslam-batch --slurm asks the cluster for it.
+		writeMetrics(task.dir + "/metrics.txt", {{"wall_s", process.wallSeconds}, {"peak_mib", process.peakMiB}});
 		outcome.message = "rendered in " + std::to_string(int(process.wallSeconds)) + " s";
+	}
 	std::ofstream(doneFile) << record << "\n";
 	outcome.ok = true;
 	return outcome;
