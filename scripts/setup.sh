@@ -18,6 +18,8 @@
 #   VSLAM_JOBS        parallel build jobs (default: number of cores)
 #   VSLAM_SKIP_APT=1  do not touch packages (e.g. no network)
 #   VSLAM_SKIP_SANITIZED=1  test: skip the sanitized build and run
+#   VSLAM_CMAKE_ARGS  more CMake options (e.g. -DVSLAM_BUILD_TESTS=OFF, as
+#                     scripts/Dockerfile builds)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -75,7 +77,8 @@ install_packages() {
 
 build() {
   echo "[setup] configuring and building in $BUILD ($JOBS jobs)"
-  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+  # shellcheck disable=SC2086 # the options are separate words
+  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release ${VSLAM_CMAKE_ARGS:-}
   cmake --build "$BUILD" -j "$JOBS"
 }
 

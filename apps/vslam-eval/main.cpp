@@ -8,6 +8,7 @@
 #include <libvslam/eval/MapError.h>
 #include <libvslam/eval/RelativePoseError.h>
 #include <libvslam/eval/RunFigures.h>
+#include <libvslam/eval/ScenePicture.h>
 #include <libvslam/world/FloorPlanFile.h>
 
 #include <cmath>
@@ -51,7 +52,9 @@ const char* kUsage =
 	"  --landmarks FILE    true landmarks (a simulator's or mrclam2rawlog's _landmarks.txt):\n"
 	"                      the map's error, landmarks matched by ID, raw and in the\n"
 	"                      trajectory's SE(2) alignment\n"
-	"  --map FILE          the estimated map (default with --run: DIR/final_map.txt)\n";
+	"  --map FILE          the estimated map (default with --run: DIR/final_map.txt)\n"
+	"  --scene-png FILE    with --run: DIR/final_map.3Dscene drawn offscreen, as\n"
+	"                      SceneViewer3D shows it from above\n";
 
 double positiveNumber(const std::string& option, const char* text)
 {
@@ -132,7 +135,7 @@ int main(int argc, const char** argv)
 		double from = 0, to = std::numeric_limits<double>::infinity();
 		std::vector<RpeOptions> windows;
 		std::vector<std::string> files;
-		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile;
+		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile, scenePng;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];
@@ -173,6 +176,8 @@ int main(int argc, const char** argv)
 				trueMapFile = argv[++i];
 			else if (a == "--map" && hasValue)
 				mapFile = argv[++i];
+			else if (a == "--scene-png" && hasValue)
+				scenePng = argv[++i];
 			else if (a.rfind("--", 0) == 0)
 				throw std::invalid_argument("unknown option '" + a + "' (or its value is missing)");
 			else
@@ -188,6 +193,7 @@ int main(int argc, const char** argv)
 			if (mapFile.empty()) mapFile = runDir + "/final_map.txt";
 		}
 		if (files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
+		if (!scenePng.empty() && runDir.empty()) throw std::invalid_argument("--scene-png needs --run DIR");
 		if (windows.empty()) windows.push_back(RpeOptions());  // 1 s, as the TUM tools
 
 		if (!(from < to)) throw std::invalid_argument("--from must be before --to");
@@ -230,6 +236,7 @@ int main(int argc, const char** argv)
 		if (!plotFile.empty()) writePathsFigure(src, {}, plotFile);
 		if (!figuresDir.empty())
 			for (const auto& f : writeRunFigures(src, figuresDir)) std::printf("figure: %s\n", f.c_str());
+		if (!scenePng.empty()) writeScenePicture(runDir + "/final_map.3Dscene", scenePng);
 		return 0;
 	}
 	catch (const std::invalid_argument& e)

@@ -23,6 +23,7 @@
 #include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/LandmarkMapFile.h>
 #include <libvslam/io/RunScene.h>
+#include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -317,11 +318,34 @@ struct CVSlamApp::RunState
 
 namespace
 {
-/** What SceneViewer3D shows of the run: its paths and the best particle's map. */
-RunSceneContent sceneOf(const Trajectory& estimated, const Trajectory& odometry, const Trajectory& groundTruth,
-	const CLandmarkIndex& index, const LandmarkBank& bank)
+/** The floor plan vslam-simul wrote beside a rendered rawlog (NAME.rawlog:
+ * NAME_world.world) as outlines, or none. One that cannot be read is a
+ * warning: the scene is drawn without it. */
+std::vector<std::vector<Eigen::Vector2d>> floorPlanBeside(const std::string& rawlogFile)
 {
-	RunSceneContent c{estimated, odometry, groundTruth, {}};
+	const fs::path rawlog(rawlogFile);
+	const fs::path world = rawlog.parent_path() / (rawlog.stem().string() + "_world.world");
+	if (!fs::is_regular_file(world)) return {};
+	try
+	{
+		return world::loadFloorPlan(world.string(), "/usr/share").solidPolygons();
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "vslam: warning: final_map.3Dscene without the floor plan: " << e.what() << "\n";
+		return {};
+	}
+}
+
+/** What SceneViewer3D shows of the run: its paths, the best particle's map
+ * and the floor plan of a rendered rawlog. */
+RunSceneContent sceneOf(const Trajectory& estimated, const Trajectory& odometry, const Trajectory& groundTruth,
+	const CLandmarkIndex& index, const LandmarkBank& bank, const std::string& rawlogFile)
+{
+	Trajectory truth;  // over the run's time only (a run may stop before its ground truth ends)
+	for (const auto& p : groundTruth)
+		if (!estimated.empty() && p.t >= estimated.front().t - 0.5 && p.t <= estimated.back().t + 0.5) truth.push_back(p);
+	RunSceneContent c{estimated, odometry, truth, {}, floorPlanBeside(rawlogFile)};
 	for (size_t slot = 0; slot < bank.size(); slot++)
 	{
 		const auto& l = bank[slot];
@@ -631,7 +655,7 @@ void CVSlamApp::writeFinalOutputs(
 		g.commit();
 	}
 	writeRunScene(folder.file("final_map.3Dscene"),
-		sceneOf(r.estimated, r.odometry, groundTruth, r.filter.landmarkIndex(), best.bank));
+		sceneOf(r.estimated, r.odometry, groundTruth, r.filter.landmarkIndex(), best.bank, m_rawlogFile));
 	if (groundTruth.empty()) return;
 	summary.ate = computeAte(r.estimated, groundTruth);
 	summary.ateAligned = computeAte(r.estimated, groundTruth, {0.5, true});

@@ -50,6 +50,23 @@ mrpt::opengl::CSetOfLines::Ptr ellipseLines(const se2::Pose& at, const Eigen::Ma
 	return lines;
 }
 
+/** The floor plan's outlines, each closed. */
+mrpt::opengl::CSetOfLines::Ptr floorPlanLines(const std::vector<std::vector<Eigen::Vector2d>>& outlines)
+{
+	auto lines = mrpt::opengl::CSetOfLines::Create();
+	lines->setName("floor plan");
+	lines->setColor_u8({120, 120, 120});
+	lines->setLineWidth(2);
+	for (const auto& outline : outlines)
+		for (size_t i = 0; i < outline.size(); i++)
+		{
+			const Eigen::Vector2d& a = outline[i];
+			const Eigen::Vector2d& b = outline[(i + 1) % outline.size()];
+			lines->appendLine(a.x(), a.y(), 0, b.x(), b.y(), 0);
+		}
+	return lines;
+}
+
 /** A grid under everything the run saw, 1 m cells. */
 mrpt::opengl::CGridPlaneXY::Ptr floorGrid(const RunSceneContent& c)
 {
@@ -60,6 +77,8 @@ mrpt::opengl::CGridPlaneXY::Ptr floorGrid(const RunSceneContent& c)
 	for (const Trajectory* path : {&c.estimated, &c.odometry, &c.truth})
 		for (const auto& p : *path) extend(p.pose.x, p.pose.y);
 	for (const auto& l : c.landmarks) extend(l.pose.x, l.pose.y);
+	for (const auto& outline : c.floorPlan)
+		for (const auto& corner : outline) extend(corner.x(), corner.y());
 	return mrpt::opengl::CGridPlaneXY::Create(
 		std::floor(x0) - 1, std::ceil(x1) + 1, std::floor(y0) - 1, std::ceil(y1) + 1, 0, 1);
 }
@@ -69,6 +88,7 @@ void writeRunScene(const std::string& file, const RunSceneContent& c)
 {
 	mrpt::opengl::COpenGLScene scene;
 	scene.insert(floorGrid(c));
+	if (!c.floorPlan.empty()) scene.insert(floorPlanLines(c.floorPlan));
 	scene.insert(pathLines(c.odometry, {200, 0, 0}, "odometry"));
 	if (!c.truth.empty()) scene.insert(pathLines(c.truth, {0, 160, 0}, "ground truth"));
 	scene.insert(pathLines(c.estimated, {0, 0, 220}, "estimate"));

@@ -7,6 +7,7 @@
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/LandmarkMapFile.h>
 #include <libvslam/obs/registerClasses.h>
+#include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -14,6 +15,8 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
 
@@ -476,4 +479,56 @@ TEST(VslamApp, WritesASceneAndAPoseGraphThatMrptsOwnReadersOpen)
 		EXPECT_TRUE(contains(info.output, "Nodes count (in VERTEX2/3 entries) : " + std::to_string(graph.nodes.size())))
 			<< info.output;
 	}
+}
+
+namespace
+{
+/** Segments of the scene's line set named \a name (0 if none). */
+size_t sceneLines(const std::string& sceneFile, const std::string& name)
+{
+	mrpt::opengl::COpenGLScene scene;
+	if (!scene.loadFromFile(sceneFile)) return 0;
+	for (const auto& obj : *scene.getViewport())
+		if (const auto lines = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(obj); lines && lines->getName() == name)
+			return lines->size();
+	return 0;
+}
+}  // namespace
+
+TEST(VslamApp, TheSceneOfARenderedRawlogShowsTheFloorPlanBesideIt)
+{
+	TempDir dir;
+	// A rendered rawlog comes with NAME_world.world (vslam-simul writes it).
+	fs::copy_file(kSource + "/rawlogs/demo_visual.rawlog", dir.file("home.rawlog"));
+	fs::copy_file(kSource + "/config_ini/worlds/living_room.world", dir.file("home_world.world"));
+	const std::string run = quoted(kVslam) + " " + quoted(kDemoIni) + " " + quoted(dir.file("home.rawlog")) +
+		" --quiet --set vslam.max_steps=600 --out ";
+	ASSERT_EQ(runCommand(run + quoted(dir.file("o"))).exitCode, 0);
+	size_t corners = 0;
+	for (const auto& outline : vslam::world::loadFloorPlan(dir.file("home_world.world"), "/usr/share").solidPolygons())
+		corners += outline.size();
+	EXPECT_GT(corners, 30u);  // 4 walls, 5 boxes
+	EXPECT_EQ(sceneLines(dir.file("o/final_map.3Dscene"), "floor plan"), corners);  // every outline closed
+
+	// Drawn offscreen by vslam-eval: the floor plan grey, the estimate blue.
+	const auto eval = runCommand(std::string(VSLAM_BINARY_DIR) + "/bin/vslam-eval --run " + quoted(dir.file("o")) + " " +
+		quoted(kSource + "/rawlogs/demo_visual_groundtruth.tum") + " --scene-png " + quoted(dir.file("scene.png")));
+	ASSERT_EQ(eval.exitCode, 0) << eval.output;
+	const cv::Mat picture = cv::imread(dir.file("scene.png"));
+	ASSERT_EQ(picture.cols, 1200);
+	ASSERT_EQ(picture.rows, 900);
+	cv::Mat grey, blue;
+	cv::inRange(picture, cv::Scalar(100, 100, 100), cv::Scalar(140, 140, 140), grey);
+	cv::inRange(picture, cv::Scalar(150, 0, 0), cv::Scalar(255, 60, 60), blue);
+	EXPECT_GT(cv::countNonZero(grey), 2000);
+	EXPECT_GT(cv::countNonZero(blue), 100);  // a thin line: 235 here
+
+	// One that cannot be read: a warning, and the scene without it.
+	std::ofstream(dir.file("home_world.world")) << "wall 0 0 oops\n";
+	const auto r = runCommand(run + quoted(dir.file("o2")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_TRUE(contains(r.output, "warning: final_map.3Dscene without the floor plan")) << r.output;
+	EXPECT_TRUE(contains(r.output, "home_world.world")) << r.output;
+	EXPECT_EQ(sceneLines(dir.file("o2/final_map.3Dscene"), "floor plan"), 0u);
+	EXPECT_GT(sceneLines(dir.file("o2/final_map.3Dscene"), "estimate"), 590u);
 }
