@@ -43,106 +43,131 @@ const char* kUsage =
 	"OUTPUT_DIR/summary.{md,csv} and summary_ate.png.\n"
 	"Exit codes: 0 ok, 1 usage, 2 batch or vslam configuration error, 3 some task or the submission failed.\n";
 
+/** The command line. A mistake throws std::invalid_argument. */
+struct Arguments
+{
+	std::string batchFile, taskId, slurmDir, mode = "run";
+	bool submit = false, help = false;
+	std::vector<std::string> overrides;
+	int jobs = -1;  //!< --jobs, or -1
+};
+
+Arguments parseArguments(int argc, const char** argv)
+{
+	Arguments args;
+	for (int i = 1; i < argc; i++)
+	{
+		const std::string a = argv[i];
+		const bool hasValue = i + 1 < argc;
+		if (a == "--help" || a == "-h")
+			args.help = true;
+		else if (a == "--list-tasks" || a == "--summary")
+			args.mode = a.substr(2);
+		else if (a == "--task" && hasValue)
+			args.mode = "task", args.taskId = argv[++i];
+		else if (a == "--slurm" && hasValue)
+			args.mode = "slurm", args.slurmDir = argv[++i];
+		else if (a == "--submit")
+			args.submit = true;
+		else if (a == "--set" && hasValue)
+			args.overrides.push_back(argv[++i]);
+		else if (a == "--jobs" && hasValue)
+		{
+			const std::string n = argv[++i];
+			if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos || n.size() > 4)
+				throw std::invalid_argument("--jobs needs a whole number, not '" + n + "'");
+			args.jobs = std::stoi(n);
+		}
+		else if (a.rfind("--", 0) == 0 || !args.batchFile.empty())
+			throw std::invalid_argument("unexpected argument '" + a + "'");
+		else
+			args.batchFile = a;
+	}
+	if (args.submit && args.mode != "slurm") throw std::invalid_argument("--submit goes with --slurm DIR");
+	return args;
+}
+
+/** Runs the batch here (mode "run") or only writes its summary; exit 3 if a task failed. */
+int runOrSummarize(const vslam::batch::BatchPlan& plan, const std::string& mode, const std::string& binDir)
+{
+	using namespace vslam::batch;
+	BatchOutcome outcome;
+	if (mode == "run")
+	{
+		std::cout << "vslam-batch: " << plan.tasks.size() << " tasks (" << plan.scenarios.size() << " scenarios, "
+				  << plan.variations.size() << " variations, " << plan.seeds.size() << " seeds), " << plan.jobs
+				  << " at a time -> " << plan.outputDir << "\n";
+		outcome = runBatch(plan, binDir, [](const std::string& line) { std::cout << line << std::endl; });
+	}
+	std::cout << "\n" << writeBatchSummary(plan) << "\nvslam-batch: " << plan.outputDir << "/summary.md, summary.csv, summary_ate.png";
+	if (mode == "run")
+		std::cout << "; " << outcome.done << " run, " << outcome.skipped << " done before, " << outcome.failed << " failed";
+	std::cout << "\n";
+	return outcome.failed ? 3 : 0;
+}
+
+/** What the mode does with the loaded plan; the exit code. */
+int runMode(const Arguments& args, const vslam::batch::BatchPlan& plan, const std::string& binDir)
+{
+	using namespace vslam::batch;
+	if (args.mode == "list-tasks")
+	{
+		for (const auto& line : listedTaskCommands(plan, binDir)) std::cout << line << "\n";
+		return 0;
+	}
+	if (args.mode == "slurm")
+	{
+		const SlurmSubmission submission = writeSlurmSubmission(plan, binDir, args.slurmDir);
+		std::cout << submission.describe();
+		if (args.submit) submitSlurmSubmission(submission, std::cout);
+		return 0;
+	}
+	if (args.mode == "task")
+	{
+		const Task* t = plan.find(args.taskId);
+		if (!t)
+		{
+			std::cerr << "vslam-batch: error: no task '" << args.taskId << "' in " << args.batchFile
+					  << " (see --list-tasks)\n";
+			return 1;
+		}
+		const TaskOutcome r = runTask(plan, *t, binDir);
+		std::cout << t->id << ": " << (r.ok ? "" : "FAILED: ") << r.message << "\n";
+		return r.ok ? 0 : 3;
+	}
+	return runOrSummarize(plan, args.mode, binDir);
+}
 }  // namespace
 
 int main(int argc, const char** argv)
 {
-	using namespace vslam::batch;
-	std::string batchFile, taskId, slurmDir, mode = "run";
-	bool submit = false;
-	std::vector<std::string> overrides;
-	int jobs = -1;
-	for (int i = 1; i < argc; i++)
+	Arguments args;
+	try
 	{
-		const std::string a = argv[i];
-		if (a == "--help" || a == "-h")
-		{
-			std::cout << kUsage;
-			return 0;
-		}
-		if (a == "--list-tasks" || a == "--summary")
-			mode = a.substr(2);
-		else if (a == "--task" && i + 1 < argc)
-			mode = "task", taskId = argv[++i];
-		else if (a == "--slurm" && i + 1 < argc)
-			mode = "slurm", slurmDir = argv[++i];
-		else if (a == "--submit")
-			submit = true;
-		else if (a == "--set" && i + 1 < argc)
-			overrides.push_back(argv[++i]);
-		else if (a == "--jobs" && i + 1 < argc)
-		{
-			const std::string n = argv[++i];
-			if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos || n.size() > 4)
-			{
-				std::cerr << "vslam-batch: error: --jobs needs a whole number, not '" << n << "'\n" << kUsage;
-				return 1;
-			}
-			jobs = std::stoi(n);
-		}
-		else if (a.rfind("--", 0) == 0 || !batchFile.empty())
-		{
-			std::cerr << "vslam-batch: error: unexpected argument '" << a << "'\n" << kUsage;
-			return 1;
-		}
-		else
-			batchFile = a;
+		args = parseArguments(argc, argv);
 	}
-	if (submit && mode != "slurm")
+	catch (const std::invalid_argument& e)
 	{
-		std::cerr << "vslam-batch: error: --submit goes with --slurm DIR\n" << kUsage;
+		std::cerr << "vslam-batch: error: " << e.what() << "\n" << kUsage;
 		return 1;
 	}
-	if (batchFile.empty())
+	if (args.help)
+	{
+		std::cout << kUsage;
+		return 0;
+	}
+	if (args.batchFile.empty())
 	{
 		std::cerr << kUsage;
 		return 1;
 	}
 	try
 	{
-		BatchPlan plan = loadBatchPlan(batchFile, overrides);
-		if (jobs > 0) plan.jobs = jobs;
+		vslam::batch::BatchPlan plan = vslam::batch::loadBatchPlan(args.batchFile, args.overrides);
+		if (args.jobs > 0) plan.jobs = args.jobs;
 		const std::string binDir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
 		std::filesystem::create_directories(plan.outputDir);
-		if (mode == "list-tasks")
-		{
-			for (const auto& line : listedTaskCommands(plan, binDir)) std::cout << line << "\n";
-			return 0;
-		}
-		if (mode == "slurm")
-		{
-			const SlurmSubmission submission = writeSlurmSubmission(plan, binDir, slurmDir);
-			std::cout << submission.describe();
-			if (submit) submitSlurmSubmission(submission, std::cout);
-			return 0;
-		}
-		if (mode == "task")
-		{
-			const Task* t = plan.find(taskId);
-			if (!t)
-			{
-				std::cerr << "vslam-batch: error: no task '" << taskId << "' in " << batchFile
-						  << " (see --list-tasks)\n";
-				return 1;
-			}
-			const TaskOutcome r = runTask(plan, *t, binDir);
-			std::cout << t->id << ": " << (r.ok ? "" : "FAILED: ") << r.message << "\n";
-			return r.ok ? 0 : 3;
-		}
-		BatchOutcome outcome;
-		if (mode == "run")
-		{
-			std::cout << "vslam-batch: " << plan.tasks.size() << " tasks (" << plan.scenarios.size() << " scenarios, "
-					  << plan.variations.size() << " variations, " << plan.seeds.size() << " seeds), " << plan.jobs
-					  << " at a time -> " << plan.outputDir << "\n";
-			outcome = runBatch(plan, binDir, [](const std::string& line) { std::cout << line << std::endl; });
-		}
-		std::cout << "\n" << writeBatchSummary(plan) << "\nvslam-batch: " << plan.outputDir << "/summary.md, summary.csv, summary_ate.png";
-		if (mode == "run")
-			std::cout << "; " << outcome.done << " run, " << outcome.skipped << " done before, " << outcome.failed
-					  << " failed";
-		std::cout << "\n";
-		return outcome.failed ? 3 : 0;
+		return runMode(args, plan, binDir);
 	}
 	catch (const vslam::ConfigError& e)
 	{
