@@ -3,6 +3,7 @@
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/core/AllottedCpus.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -149,25 +150,19 @@ class BatchFile
 		return m_cfg.read_string(section, key, "", false);
 	}
 
-	/** A whole number in [lo, hi], or \a absent if the key is not there. */
+	/** A whole number in [lo, hi] (read as every INI key is), or \a absent
+	 * if the key is not there or empty. */
 	int wholeNumber(const std::string& section, const std::string& key, int lo, int hi, int absent) const
 	{
-		const std::string value = text(section, key);
-		if (value.empty()) return absent;
-		size_t used = 0;
-		long n = 0;
+		if (text(section, key).empty()) return absent;
 		try
 		{
-			n = std::stol(value, &used);
+			return int(config::readInt(m_cfg, section, key, absent, config::Range::closed(lo, hi)));
 		}
-		catch (const std::exception&)
+		catch (const ConfigError& e)
 		{
-			used = 0;
+			throw ConfigError("batch '" + m_file + "', " + e.what());
 		}
-		if (used != value.size()) throw ConfigError(where(section, key) + ": '" + value + "' is not a whole number");
-		if (n < lo || n > hi)
-			throw ConfigError(where(section, key) + ": must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-		return int(n);
 	}
 
 	/** A path relative to the batch file's folder, made absolute; must

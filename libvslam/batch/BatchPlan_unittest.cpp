@@ -106,7 +106,7 @@ TEST(BatchPlan, MistakesAreConfigErrorsNamingTheSectionAndKey)
 	expectError("seeds = 1", "[grids]\n", "unknown section [grids]");
 	expectError("seeds = 3-1", "", "'3-1' is not a seed");
 	expectError("seeds = 1 1", "", "a seed is given twice");
-	expectError("seeds = 1\njobs = many", "", "'many' is not a whole number");
+	expectError("seeds = 1\njobs = many", "", "[batch] jobs = 'many': not an integer");
 	expectError("seeds = 1", "[scenario:other]\nrawlog = nowhere.rawlog\n", "[scenario:other] rawlog: no file");
 	expectError("seeds = 1", "[scenario:other]\nground_truth = " + kSource + "/rawlogs/demo_visual_groundtruth.tum\n",
 		"give either simul_ini or rawlog");
