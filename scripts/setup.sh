@@ -83,9 +83,9 @@ build() {
 }
 
 # The Debian package as a user installs it: built with CPack, installed
-# with dpkg (every dependency must already be there: the build needed
-# them), and the installed vslam run on the installed demo. Root only (CI
-# is); the package stays installed.
+# with apt-get install ./vslam_*.deb (its dependencies are there: the
+# build needed them), and the installed vslam run on the installed demo
+# from another folder. Root only (CI is); the package stays installed.
 check_debian_package() {
   if [[ $EUID -ne 0 ]]; then
     echo "[setup] not root: not installing the .deb"
@@ -95,7 +95,8 @@ check_debian_package() {
   (cd "$BUILD" && rm -f vslam_*.deb && cpack -G DEB > cpack.log)
   local deb
   deb="$(ls "$BUILD"/vslam_*.deb)"
-  dpkg -i "$deb" > /dev/null
+  apt-get install -y --no-install-recommends "$deb" > "$BUILD/apt-install-deb.log" ||
+    { cat "$BUILD/apt-install-deb.log"; echo "[setup] error: apt-get install $deb failed" >&2; exit 1; }
   local out
   out="$(mktemp -d)"
   (cd "$out" && /usr/bin/vslam /usr/share/vslam/config_ini/demo_visual.ini --out run --quiet \
@@ -129,6 +130,8 @@ case "$MODE" in
   test)
     echo "[setup] running all tests"
     ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS"
+    # What the Slurm test did (its sacct table), also when it passed.
+    sed -n '/^[0-9]*\/[0-9]* Test: SlurmCluster/,/^Test time/p' "$BUILD/Testing/Temporary/LastTest.log"
     check_debian_package
     if [[ "${VSLAM_SKIP_SANITIZED:-0}" == 1 ]]; then
       echo "[setup] VSLAM_SKIP_SANITIZED=1: not running the tests under ASan + UBSan"
