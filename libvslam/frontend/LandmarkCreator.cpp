@@ -178,24 +178,14 @@ bool poseFromImages(
 	for (int i = 0; i < inliers.rows; i++) inlier[i] = inliers.at<uchar>(i) != 0;
 	return true;
 }
-}  // namespace
-
-CreationResult vslam::createLandmark(
-	const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount,
-	const TVisualFrontEndOptions& o)
+/** Tracks: features of the newest view matched in every other view (near
+ * the odometry's epipolar lines with creation_guided_matching); each is
+ * [feature in the newest, in view 0, ..., in view n-2]. */
+std::vector<std::vector<int>> matchTracks(const std::vector<const CreationView*>& views, const TVisualFrontEndOptions& o)
 {
-	CreationResult result;
 	const int n = static_cast<int>(views.size());
-	if (n < 2)
-	{
-		result.why = "fewer than two views";
-		return result;
-	}
 	const CreationView& last = *views.back();
 	const PinholeCamera& cam = last.features.camera;
-
-	// Tracks: features of the newest view matched in every other view
-	// (near the odometry's epipolar lines with creation_guided_matching).
 	const double bandPx = 3 * (cam.fx + cam.fy) / 2 *
 			std::hypot(std::tan(o.creation_odometry_sigma_deg * M_PI / 180), o.creation_odometry_sigma_rel) +
 		3.0;
@@ -210,7 +200,7 @@ CreationResult vslam::createLandmark(
 				 o.match_ratio, o.creation_guided_matching ? &band : nullptr))
 			matchOf[v][a] = b;
 	}
-	std::vector<std::vector<int>> tracks;  // [feature in last, in view 0, ..., in view n-2]
+	std::vector<std::vector<int>> tracks;
 	for (const auto& [a, b0] : matchOf[0])
 	{
 		std::vector<int> t{a, b0};
@@ -222,24 +212,23 @@ CreationResult vslam::createLandmark(
 		}
 		if (static_cast<int>(t.size()) == n) tracks.push_back(std::move(t));
 	}
-	result.tracks = static_cast<int>(tracks.size());
-	if (result.tracks < o.creation_min_points)
-	{
-		result.why = "only " + std::to_string(result.tracks) + " features matched across the views";
-		return result;
-	}
+	return tracks;
+}
 
-	// Poses relative to the newest camera: odometry first, then the
-	// essential matrix for the oldest view.
+/** The bundle adjustment problem's cameras relative to the newest, from
+ * odometry, with odometry as each one's prior; the heading measured
+ * between images in its place where there is one. */
+ba::Problem initialPoses(const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount,
+	const TVisualFrontEndOptions& o, CreationResult& result)
+{
+	const CreationView& last = *views.back();
 	ba::Problem problem;
-	problem.camera = cam;
+	problem.camera = last.features.camera;
 	problem.poses.push_back({});
-	// Odometry as priors on every view's pose relative to the newest; the
-	// measured heading between images, where there is one, in its place.
-	for (int v = 0; v + 1 < n; v++)
+	for (size_t v = 0; v + 1 < views.size(); v++)
 	{
 		ba::PosePrior prior;
-		prior.camera = v + 1;
+		prior.camera = static_cast<int>(v) + 1;
 		prior.sigmaRotation = o.creation_odometry_sigma_deg * M_PI / 180;
 		mrpt::poses::CPose3D camera = views[v]->cameraPose;
 		if (o.creation_visual_heading)
@@ -255,40 +244,48 @@ CreationResult vslam::createLandmark(
 		prior.sigmaTranslation = std::max(1e-3, o.creation_odometry_sigma_rel * prior.pose.centre().norm());
 		problem.priors.push_back(prior);
 	}
-	const double baseline = problem.poses[1].t.norm();
-	{
-		std::vector<cv::Point2f> pl, p0;
-		for (const auto& t : tracks)
-		{
-			pl.push_back(last.features.pixels[t[0]]);
-			p0.push_back(views[0]->features.pixels[t[1]]);
-		}
-		ba::CameraPose fromImages;
-		std::vector<bool> inlier;
-		if (poseFromImages(cam, pl, p0, problem.poses[1], fromImages, inlier))
-		{
-			// Tracks that break the epipolar geometry are mismatches.
-			std::vector<std::vector<int>> kept;
-			for (size_t k = 0; k < tracks.size(); k++)
-				if (inlier[k]) kept.push_back(std::move(tracks[k]));
-			tracks = std::move(kept);
-			// Its rotation, unless the heading was measured between images:
-			// in forward motion the essential matrix's is the less certain
-			// (LandmarkPipeline's forward drive, seeds 11-40: mean worst
-			// heading error of later measurements 0.43 deg with it, 0.40
-			// without).
-			if (problem.priors[0].sigmaYaw <= 0)
-			{
-				// Keep the middle views consistent: apply the same correction.
-				const Eigen::Matrix3d dR = fromImages.R * problem.poses[1].R.transpose();
-				for (int v = 2; v < n; v++) problem.poses[v].R = dR * problem.poses[v].R;
-				problem.poses[1] = fromImages;
-				result.rotationFromImages = true;
-			}
-		}
-	}
+	return problem;
+}
 
-	// Triangulate and refine; drop gross outliers once and refine again.
+/** The essential matrix between the newest and the oldest view: tracks
+ * that break its epipolar geometry are dropped as mismatches, and its
+ * rotation replaces the odometry's unless the heading was measured between
+ * images. */
+void correctOldestPoseFromImages(const std::vector<const CreationView*>& views, ba::Problem& problem,
+	std::vector<std::vector<int>>& tracks, CreationResult& result)
+{
+	const CreationView& last = *views.back();
+	std::vector<cv::Point2f> pl, p0;
+	for (const auto& t : tracks)
+	{
+		pl.push_back(last.features.pixels[t[0]]);
+		p0.push_back(views[0]->features.pixels[t[1]]);
+	}
+	ba::CameraPose fromImages;
+	std::vector<bool> inlier;
+	if (!poseFromImages(problem.camera, pl, p0, problem.poses[1], fromImages, inlier)) return;
+	std::vector<std::vector<int>> kept;
+	for (size_t k = 0; k < tracks.size(); k++)
+		if (inlier[k]) kept.push_back(std::move(tracks[k]));
+	tracks = std::move(kept);
+	// In forward motion the essential matrix's rotation is the less certain
+	// one (a forward drive over 30 seeds: mean worst heading error of later
+	// measurements 0.43 deg with it, 0.40 without), so a measured heading stays.
+	if (problem.priors[0].sigmaYaw > 0) return;
+	// Keep the middle views consistent: apply the same correction.
+	const Eigen::Matrix3d dR = fromImages.R * problem.poses[1].R.transpose();
+	for (size_t v = 2; v < problem.poses.size(); v++) problem.poses[v].R = dR * problem.poses[v].R;
+	problem.poses[1] = fromImages;
+	result.rotationFromImages = true;
+}
+
+/** Each track triangulated, if in front of every camera, with its
+ * observations added to the problem; the track of each point. */
+std::vector<int> triangulateTracks(
+	const std::vector<const CreationView*>& views, const std::vector<std::vector<int>>& tracks, ba::Problem& problem)
+{
+	const int n = static_cast<int>(views.size());
+	const CreationView& last = *views.back();
 	const auto pixelOf = [&](int view, const std::vector<int>& t) {
 		// view 0 of the problem is the newest image (track index 0)
 		const auto& px = view == 0 ? last.features.pixels[t[0]] : views[view - 1]->features.pixels[t[view]];
@@ -300,7 +297,7 @@ CreationResult vslam::createLandmark(
 		std::vector<Eigen::Vector2d> px;
 		for (int v = 0; v < n; v++) px.push_back(pixelOf(v, tracks[k]));
 		Eigen::Vector3d X;
-		if (!ba::triangulate(cam, problem.poses, px, X)) continue;
+		if (!ba::triangulate(problem.camera, problem.poses, px, X)) continue;
 		bool inFront = true;
 		for (const auto& p : problem.poses) inFront = inFront && p.map(X).z() > 0;
 		if (!inFront) continue;
@@ -309,59 +306,53 @@ CreationResult vslam::createLandmark(
 		trackOfPoint.push_back(static_cast<int>(k));
 		for (int v = 0; v < n; v++) problem.observations.push_back({v, i, px[v]});
 	}
-	const auto maxErrorOfPoint = [&](const ba::Problem& p) {
-		std::vector<double> e(p.points.size(), 0);
-		for (const auto& ob : p.observations)
-		{
-			const double r = p.poses[ob.camera].map(p.points[ob.point]).z() > 0
-				? ba::residual(p, ob).norm()
-				: std::numeric_limits<double>::infinity();
-			e[ob.point] = std::max(e[ob.point], r);
-		}
-		return e;
-	};
+	return trackOfPoint;
+}
+
+/** Each point's largest reprojection error (infinite behind a camera). */
+std::vector<double> maxErrorOfPoint(const ba::Problem& p)
+{
+	std::vector<double> e(p.points.size(), 0);
+	for (const auto& ob : p.observations)
+	{
+		const double r = p.poses[ob.camera].map(p.points[ob.point]).z() > 0 ? ba::residual(p, ob).norm()
+																			 : std::numeric_limits<double>::infinity();
+		e[ob.point] = std::max(e[ob.point], r);
+	}
+	return e;
+}
+
+/** Refines, drops the points far off (beyond 3 x maxReprojectionPx) and
+ * refines again. */
+void refineWithoutGrossOutliers(ba::Problem& problem, std::vector<int>& trackOfPoint, double maxReprojectionPx)
+{
 	ba::refine(problem);
-	{
-		// Second round without the points far off after the first.
-		const auto err = maxErrorOfPoint(problem);
-		ba::Problem kept;
-		kept.camera = problem.camera;
-		kept.poses = problem.poses;
-		kept.priors = problem.priors;
-		std::vector<int> keptTracks;
-		std::vector<int> newIndex(problem.points.size(), -1);
-		for (size_t i = 0; i < problem.points.size(); i++)
-			if (err[i] <= 3 * o.creation_max_reprojection_px)
-			{
-				newIndex[i] = static_cast<int>(kept.points.size());
-				kept.points.push_back(problem.points[i]);
-				keptTracks.push_back(trackOfPoint[i]);
-			}
-		for (const auto& ob : problem.observations)
-			if (newIndex[ob.point] >= 0) kept.observations.push_back({ob.camera, newIndex[ob.point], ob.pixel});
-		problem = std::move(kept);
-		trackOfPoint = std::move(keptTracks);
-		ba::refine(problem);
-	}
-
-	// Scale from odometry: the oldest camera's distance.
-	const double estimated = problem.poses[1].centre().norm();
-	if (!(estimated > 1e-9) || !(baseline > 0))
-	{
-		result.why = "no baseline between the views";
-		return result;
-	}
-	const double s = baseline / estimated;
-	for (auto& p : problem.poses) p.t *= s;
-	for (auto& X : problem.points) X *= s;
-
-	// Keep well-conditioned points only.
 	const auto err = maxErrorOfPoint(problem);
-	// Each point's depth std, only where an option uses it.
-	const bool depthStdUsed = o.keepsDepthStd();
-	const std::vector<float> depthStd = depthStdUsed
-		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px))
-		: std::vector<float>();
+	ba::Problem kept;
+	kept.camera = problem.camera;
+	kept.poses = problem.poses;
+	kept.priors = problem.priors;
+	std::vector<int> keptTracks;
+	std::vector<int> newIndex(problem.points.size(), -1);
+	for (size_t i = 0; i < problem.points.size(); i++)
+		if (err[i] <= 3 * maxReprojectionPx)
+		{
+			newIndex[i] = static_cast<int>(kept.points.size());
+			kept.points.push_back(problem.points[i]);
+			keptTracks.push_back(trackOfPoint[i]);
+		}
+	for (const auto& ob : problem.observations)
+		if (newIndex[ob.point] >= 0) kept.observations.push_back({ob.camera, newIndex[ob.point], ob.pixel});
+	problem = std::move(kept);
+	trackOfPoint = std::move(keptTracks);
+	ba::refine(problem);
+}
+
+/** The well-conditioned points (reprojection error, depth, parallax between
+ * two cameras), smallest error first, at most creation_max_points. */
+std::vector<int> wellConditionedPoints(
+	const ba::Problem& problem, const std::vector<double>& err, const TVisualFrontEndOptions& o)
+{
 	std::vector<Eigen::Vector3d> centres;
 	for (const auto& p : problem.poses) centres.push_back(p.centre());
 	const double minParallax = o.creation_min_parallax_deg * M_PI / 180;
@@ -378,20 +369,20 @@ CreationResult vslam::createLandmark(
 	}
 	std::stable_sort(good.begin(), good.end(), [&](int a, int b) { return err[a] < err[b]; });
 	if (static_cast<int>(good.size()) > o.creation_max_points) good.resize(o.creation_max_points);
-	result.inliers = static_cast<int>(good.size());
-	if (result.inliers < o.creation_min_points)
-	{
-		result.why = "only " + std::to_string(result.inliers) + " well-conditioned 3-D points";
-		return result;
-	}
+	return good;
+}
 
+/** The landmark of the chosen points: in the newest robot frame, each with
+ * the newest view's descriptor (and its depth std where an option uses it). */
+VisualLandmarkModel landmarkOf(const ba::Problem& problem, const std::vector<int>& good,
+	const std::vector<float>& depthStd, const std::vector<int>& featureOfPoint, const CreationView& last,
+	const mrpt::poses::CPose3D& mount, int views)
+{
 	VisualLandmarkModel lm;
-	lm.views = n;
+	lm.views = views;
 	lm.createdAt = last.time;
 	lm.lastSeen = last.time;
 	lm.descriptors = cv::Mat(static_cast<int>(good.size()), last.features.descriptors.cols, CV_32F);
-	double sq = 0;
-	size_t count = 0;
 	for (size_t r = 0; r < good.size(); r++)
 	{
 		const int i = good[r];
@@ -399,9 +390,11 @@ CreationResult vslam::createLandmark(
 		double xr = 0, yr = 0, zr = 0;
 		mount.composePoint(X.x(), X.y(), X.z(), xr, yr, zr);
 		lm.points.emplace_back(static_cast<float>(xr), static_cast<float>(yr), static_cast<float>(zr));
-		if (o.keepsDepthStd()) lm.depthStd.push_back(depthStd[i]);  // kept only where used
-		last.features.descriptors.row(tracks[trackOfPoint[i]][0]).copyTo(lm.descriptors.row(static_cast<int>(r)));
+		if (!depthStd.empty()) lm.depthStd.push_back(depthStd[i]);
+		last.features.descriptors.row(featureOfPoint[i]).copyTo(lm.descriptors.row(static_cast<int>(r)));
 	}
+	double sq = 0;
+	size_t count = 0;
 	for (const auto& ob : problem.observations)
 		if (std::find(good.begin(), good.end(), ob.point) != good.end())
 		{
@@ -409,7 +402,59 @@ CreationResult vslam::createLandmark(
 			count++;
 		}
 	lm.reprojectionRms = count ? std::sqrt(sq / count) : 0;
-	result.landmark = std::move(lm);
+	return lm;
+}
+}  // namespace
+
+CreationResult vslam::createLandmark(
+	const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount,
+	const TVisualFrontEndOptions& o)
+{
+	CreationResult result;
+	const int n = static_cast<int>(views.size());
+	if (n < 2)
+	{
+		result.why = "fewer than two views";
+		return result;
+	}
+	std::vector<std::vector<int>> tracks = matchTracks(views, o);
+	result.tracks = static_cast<int>(tracks.size());
+	if (result.tracks < o.creation_min_points)
+	{
+		result.why = "only " + std::to_string(result.tracks) + " features matched across the views";
+		return result;
+	}
+	ba::Problem problem = initialPoses(views, mount, o, result);
+	const double baseline = problem.poses[1].t.norm();
+	correctOldestPoseFromImages(views, problem, tracks, result);
+	std::vector<int> trackOfPoint = triangulateTracks(views, tracks, problem);
+	refineWithoutGrossOutliers(problem, trackOfPoint, o.creation_max_reprojection_px);
+
+	// Scale from odometry: the oldest camera's distance.
+	const double estimated = problem.poses[1].centre().norm();
+	if (!(estimated > 1e-9) || !(baseline > 0))
+	{
+		result.why = "no baseline between the views";
+		return result;
+	}
+	const double s = baseline / estimated;
+	for (auto& p : problem.poses) p.t *= s;
+	for (auto& X : problem.points) X *= s;
+
+	const auto err = maxErrorOfPoint(problem);
+	const std::vector<int> good = wellConditionedPoints(problem, err, o);
+	result.inliers = static_cast<int>(good.size());
+	if (result.inliers < o.creation_min_points)
+	{
+		result.why = "only " + std::to_string(result.inliers) + " well-conditioned 3-D points";
+		return result;
+	}
+	const std::vector<float> depthStd = o.keepsDepthStd()  // each point's, only where an option uses it
+		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px))
+		: std::vector<float>();
+	std::vector<int> featureOfPoint;  // in the newest view
+	for (const int track : trackOfPoint) featureOfPoint.push_back(tracks[track][0]);
+	result.landmark = landmarkOf(problem, good, depthStd, featureOfPoint, *views.back(), mount, n);
 	for (int v = 1; v < n; v++) result.refinedPoses.emplace_back(problem.poses[v].R, problem.poses[v].t);
 	result.refinedPoses.emplace_back(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
 	return result;
