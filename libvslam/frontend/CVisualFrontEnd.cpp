@@ -66,6 +66,24 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	m_images++;
 	if (m_lastOdometry) m_travelled += (odometryPose - *m_lastOdometry).norm();
 	m_lastOdometry = odometryPose;
+	CreationView view = viewOf(obs, odometryPose, what, out);
+	const Recognitions recognized = recognize(view, obs, odometryPose, out);
+	const auto t = Clock::now();
+	collectForCreation(std::move(view), recognized, obs, odometryPose, out);
+	out.seconds.creation = since(t);
+	prune(odometryPose, recognized.ids, out);
+
+	m_total.features += out.seconds.features;
+	m_total.search += out.seconds.search;
+	m_total.pose += out.seconds.pose;
+	m_total.creation += out.seconds.creation;
+	m_total.heading += out.seconds.heading;
+	return out;
+}
+
+CreationView CVisualFrontEnd::viewOf(
+	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, const std::string& what, Output& out)
+{
 	auto t = Clock::now();
 	const cv::Mat pixels = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
 	if (pixels.empty()) throw std::runtime_error(what + ": the image is empty or could not be loaded");
@@ -83,14 +101,38 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		view.visualHeading = measureHeadingChange(obs, view.features, odometryPose, out);
 		out.seconds.heading = since(t);
 	}
+	return view;
+}
 
-	// Recognition: candidates from the database, then the pose solve.
-	t = Clock::now();
+namespace
+{
+/** The observation the filter receives for a reported recognition. */
+CObservationVisualLandmark::Ptr measurementOf(const VisualMeasurement& m, const mrpt::obs::CObservationImage& obs)
+{
+	auto o = CObservationVisualLandmark::Create();
+	o->timestamp = obs.timestamp;
+	o->sensorLabel = obs.sensorLabel;
+	o->landmarkID = m.landmarkID;
+	o->relPose = m.landmarkInRobot;
+	o->ProjErrRMS = m.ProjErrRMS;
+	o->NPoints = static_cast<uint32_t>(m.NPoints);
+	o->Slope = m.Slope;
+	o->SlopeStd = m.stdSlope;
+	o->Height = m.robotInLandmark.z();
+	o->sensorPoseOnRobot = obs.cameraPose;
+	o->relPoseCov = mrpt::math::CMatrixDouble33(m.covariance);
+	return o;
+}
+}  // namespace
+
+CVisualFrontEnd::Recognitions CVisualFrontEnd::recognize(const CreationView& view,
+	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, Output& out)
+{
+	auto t = Clock::now();
 	const auto candidates = m_database.candidates(view.features);
 	out.seconds.search = since(t);
 	t = Clock::now();
-	std::vector<int64_t> recognized;
-	int mostInliers = 0;  //!< of this image's recognitions
+	Recognitions recognized;
 	for (const auto& c : candidates)
 	{
 		VisualLandmarkModel* lm = m_database.find(c.id);
@@ -99,116 +141,93 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 		lm->recognitions++;
 		lm->missesInARow = 0;
 		lm->lastSeen = view.time;
-		recognized.push_back(c.id);
-		mostInliers = std::max(mostInliers, m->NPoints);
-		// Recognized (no new landmark here), but a degenerate solve measures
-		// nothing.
-		if (!m->covariance.allFinite())
-		{
-			m_poorlyConditioned++;
-			continue;
-		}
-		// ... or with a second pose that explains the image almost as well.
-		if (m->ambiguityGap < m_options.recognition_ambiguity_min_gap)
-		{
-			m_ambiguous++;
-			continue;
-		}
-		// ... or from inliers crowded into a thin strip of the image.
-		if (m->inlierSpread < m_options.recognition_min_spread)
-		{
-			m_narrow++;
-			continue;
-		}
-		// ... or where the odometry since its last recognition does not put it.
-		if (!agreesWithOdometry(
-				lm->lastReported, view.time, odometryPose, m->landmarkInRobot, m_options.recognition_odometry_gate))
-		{
-			m_inconsistent++;
-			continue;
-		}
+		recognized.ids.push_back(c.id);
+		recognized.mostInliers = std::max(recognized.mostInliers, m->NPoints);
+		if (!reportable(*lm, *m, view.time, odometryPose)) continue;  // recognized: no new landmark here
 		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		lm->lastReported = ReportedRecognition{view.time, odometryPose.asTPose(), m->landmarkInRobot.asTPose()};
-		auto o = CObservationVisualLandmark::Create();
-		o->timestamp = obs.timestamp;
-		o->sensorLabel = obs.sensorLabel;
-		o->landmarkID = m->landmarkID;
-		o->relPose = m->landmarkInRobot;
-		o->ProjErrRMS = m->ProjErrRMS;
-		o->NPoints = static_cast<uint32_t>(m->NPoints);
-		o->Slope = m->Slope;
-		o->SlopeStd = m->stdSlope;
-		o->Height = m->robotInLandmark.z();
-		o->sensorPoseOnRobot = obs.cameraPose;
-		o->relPoseCov = mrpt::math::CMatrixDouble33(m->covariance);
-		out.measurements.push_back(o);
+		out.measurements.push_back(measurementOf(*m, obs));
 	}
 	out.seconds.pose = since(t);
+	return recognized;
+}
 
-	// Creation: views along the robot's motion where no landmark is
-	// recognized, or (creation_below_inliers) none is recognized well.
-	t = Clock::now();
-	const bool wellRecognized = !recognized.empty() &&
-		(m_options.creation_below_inliers <= 0 || mostInliers >= m_options.creation_below_inliers);
-	if (wellRecognized)
-		m_views.clear();
+bool CVisualFrontEnd::reportable(
+	const VisualLandmarkModel& landmark, const VisualMeasurement& m, double time, const mrpt::poses::CPose2D& odometryPose)
+{
+	// A degenerate solve measures nothing, ...
+	if (!m.covariance.allFinite())
+		m_poorlyConditioned++;
+	// ... nor one with a second pose that explains the image almost as well, ...
+	else if (m.ambiguityGap < m_options.recognition_ambiguity_min_gap)
+		m_ambiguous++;
+	// ... or from inliers crowded into a thin strip of the image, ...
+	else if (m.inlierSpread < m_options.recognition_min_spread)
+		m_narrow++;
+	// ... or where the odometry since its last recognition does not put it.
+	else if (!agreesWithOdometry(
+				 landmark.lastReported, time, odometryPose, m.landmarkInRobot, m_options.recognition_odometry_gate))
+		m_inconsistent++;
 	else
-	{
-		const bool moved = m_views.empty() ||
-			(odometryPose - m_views.back().second).norm() >= m_options.creation_min_baseline;
-		if (moved) m_views.emplace_back(std::move(view), odometryPose);
-		while (!m_views.empty() &&
-			(odometryPose - m_views.front().second).norm() >
-				m_options.creation_max_baseline * (m_options.creation_views - 1))
-			m_views.pop_front();
-		if (static_cast<int>(m_views.size()) >= m_options.creation_views)
-		{
-			std::vector<const CreationView*> ptrs;
-			double baseline = 0;
-			for (size_t i = m_views.size() - m_options.creation_views; i < m_views.size(); i++)
-			{
-				ptrs.push_back(&m_views[i].first);
-				if (ptrs.size() > 1)
-					baseline += (m_views[i].second - m_views[i - 1].second).norm();
-			}
-			auto result = createLandmark(ptrs, obs.cameraPose, m_options);
-			m_creationAttempts++;
-			if (result.landmark)
-			{
-				result.landmark->id = m_nextId++;
-				auto c = CObservationLandmarkCreated::Create();
-				c->timestamp = obs.timestamp;
-				c->sensorLabel = obs.sensorLabel;
-				c->landmarkID = result.landmark->id;
-				// The landmark frame is the robot frame of this image.
-				c->landmarkPoseInRobot = mrpt::poses::CPose2D();
-				c->landmarkPoseInRobotCov = mrpt::math::CMatrixDouble33::Zero();
-				c->NPoints = static_cast<uint32_t>(result.landmark->points.size());
-				c->NViews = static_cast<uint32_t>(result.landmark->views);
-				c->sensorPoseOnRobot = obs.cameraPose;
-				out.created.push_back(c);
-				result.landmark->createdAtOdometry = odometryPose;
-				if (m_options.scale_refinement)
-					result.landmark->scale = LandmarkScaleTrack(baseline, scaleSettings(m_options));
-				m_database.insert(std::move(*result.landmark));
-				m_views.clear();
-			}
-			else
-			{
-				m_creationRejections[withoutNumbers(result.why)]++;
-				m_views.pop_front();  // try again with a newer set
-			}
-		}
-	}
-	out.seconds.creation = since(t);
-	prune(odometryPose, recognized, out);
+		return true;
+	return false;
+}
 
-	m_total.features += out.seconds.features;
-	m_total.search += out.seconds.search;
-	m_total.pose += out.seconds.pose;
-	m_total.creation += out.seconds.creation;
-	m_total.heading += out.seconds.heading;
-	return out;
+void CVisualFrontEnd::collectForCreation(CreationView view, const Recognitions& recognized,
+	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, Output& out)
+{
+	// Views along the robot's motion where no landmark is recognized, or
+	// (creation_below_inliers) none is recognized well.
+	const bool wellRecognized = !recognized.ids.empty() &&
+		(m_options.creation_below_inliers <= 0 || recognized.mostInliers >= m_options.creation_below_inliers);
+	if (wellRecognized)
+	{
+		m_views.clear();
+		return;
+	}
+	const bool moved =
+		m_views.empty() || (odometryPose - m_views.back().second).norm() >= m_options.creation_min_baseline;
+	if (moved) m_views.emplace_back(std::move(view), odometryPose);
+	while (!m_views.empty() &&
+		(odometryPose - m_views.front().second).norm() > m_options.creation_max_baseline * (m_options.creation_views - 1))
+		m_views.pop_front();
+	if (static_cast<int>(m_views.size()) >= m_options.creation_views) createFromViews(obs, odometryPose, out);
+}
+
+void CVisualFrontEnd::createFromViews(
+	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, Output& out)
+{
+	std::vector<const CreationView*> ptrs;
+	double baseline = 0;
+	for (size_t i = m_views.size() - m_options.creation_views; i < m_views.size(); i++)
+	{
+		ptrs.push_back(&m_views[i].first);
+		if (ptrs.size() > 1) baseline += (m_views[i].second - m_views[i - 1].second).norm();
+	}
+	auto result = createLandmark(ptrs, obs.cameraPose, m_options);
+	m_creationAttempts++;
+	if (!result.landmark)
+	{
+		m_creationRejections[withoutNumbers(result.why)]++;
+		m_views.pop_front();  // try again with a newer set
+		return;
+	}
+	result.landmark->id = m_nextId++;
+	auto c = CObservationLandmarkCreated::Create();
+	c->timestamp = obs.timestamp;
+	c->sensorLabel = obs.sensorLabel;
+	c->landmarkID = result.landmark->id;
+	// The landmark frame is the robot frame of this image.
+	c->landmarkPoseInRobot = mrpt::poses::CPose2D();
+	c->landmarkPoseInRobotCov = mrpt::math::CMatrixDouble33::Zero();
+	c->NPoints = static_cast<uint32_t>(result.landmark->points.size());
+	c->NViews = static_cast<uint32_t>(result.landmark->views);
+	c->sensorPoseOnRobot = obs.cameraPose;
+	out.created.push_back(c);
+	result.landmark->createdAtOdometry = odometryPose;
+	if (m_options.scale_refinement) result.landmark->scale = LandmarkScaleTrack(baseline, scaleSettings(m_options));
+	m_database.insert(std::move(*result.landmark));
+	m_views.clear();
 }
 
 VisualHeading CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& obs,

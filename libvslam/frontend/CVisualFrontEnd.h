@@ -83,6 +83,29 @@ class CVisualFrontEnd
 	size_t headingChangesFailed() const { return m_headingChangesFailed; }
 
    private:
+	/** This image's features (encoded for the database), camera pose and,
+	 * with heading_change, its heading along the chain of measured changes. */
+	CreationView viewOf(const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose,
+		const std::string& what, Output& out);
+	/** The landmarks recognized in the image (IDs) and the most inliers of
+	 * one; the recognitions fit to report are added to out.measurements. */
+	struct Recognitions
+	{
+		std::vector<int64_t> ids;
+		int mostInliers = 0;
+	};
+	Recognitions recognize(const CreationView& view, const mrpt::obs::CObservationImage& obs,
+		const mrpt::poses::CPose2D& odometryPose, Output& out);
+	/** Whether a recognition is reported; counts the reason when it is not. */
+	bool reportable(const VisualLandmarkModel& landmark, const VisualMeasurement& m, double time,
+		const mrpt::poses::CPose2D& odometryPose);
+	/** Keeps the view for creation when no landmark is recognized (well),
+	 * and builds a landmark once there are creation_views along the motion. */
+	void collectForCreation(CreationView view, const Recognitions& recognized, const mrpt::obs::CObservationImage& obs,
+		const mrpt::poses::CPose2D& odometryPose, Output& out);
+	/** A landmark from the newest creation_views views; on success it goes
+	 * to the database and out.created, else the oldest view is dropped. */
+	void createFromViews(const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, Output& out);
 	/** Refines the scale of the landmark just recognized in `m` from this
 	 * sighting; rescales its points and `m` when the estimate moves. */
 	void refineScale(VisualLandmarkModel& landmark, VisualMeasurement& m, const mrpt::poses::CPose2D& odometryPose,
