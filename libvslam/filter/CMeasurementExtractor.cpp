@@ -96,130 +96,127 @@ FrameMeasurements CMeasurementExtractor::extract(const mrpt::obs::CSensoryFrame&
 			haveTime = true;
 		}
 		if (auto v = std::dynamic_pointer_cast<CObservationVisualLandmark>(obs))
-		{
-			m_stats.visualSeen++;
-			if (!finite(v->relPose))
-				throw InputError(
-					"visual measurement of landmark " +
-					std::to_string(v->landmarkID) + " has a non-finite pose");
-			switch (preFilter.check(*v))
-			{
-				case CPreFilter::Verdict::RejectedProjErrRMS:
-					m_stats.rejectedProjErrRMS++;
-					continue;
-				case CPreFilter::Verdict::RejectedNPoints:
-					m_stats.rejectedNPoints++;
-					continue;
-				case CPreFilter::Verdict::RejectedSlope:
-					m_stats.rejectedSlope++;
-					continue;
-				case CPreFilter::Verdict::Accepted:
-					break;
-			}
-			m_stats.visualAccepted++;
-			LandmarkMeasurement m;
-			m.key = {LandmarkKind::Pose, v->landmarkID};
-			m.z.resize(3);
-			m.z << v->relPose.x(), v->relPose.y(), v->relPose.phi();
-			m.R = MatN::Zero(3, 3);
-			m.R.diagonal() << visual.std_dx * visual.std_dx,
-				visual.std_dy * visual.std_dy, visual.std_dphi * visual.std_dphi;
-			if (visual.predicted_cov_scale > 0)
-			{
-				const auto& P = v->relPoseCov.asEigen();
-				if (!P.allFinite() || (P.diagonal().array() < 0).any())
-					throw InputError("visual measurement of landmark " + std::to_string(v->landmarkID) +
-						" has a predicted covariance that is not finite or has a negative variance");
-				m.R += visual.predicted_cov_scale * visual.predicted_cov_scale * P;
-			}
-			out.measurements.push_back(std::move(m));
-		}
+			addVisual(*v, out);
 		else if (auto c = std::dynamic_pointer_cast<CObservationLandmarkCreated>(obs))
-		{
-			m_stats.creationsSeen++;
-			if (!finite(c->landmarkPoseInRobot) ||
-				!c->landmarkPoseInRobotCov.asEigen().allFinite())
-				throw InputError(
-					"creation of landmark " + std::to_string(c->landmarkID) +
-					" has a non-finite pose");
-			LandmarkCreation lc;
-			lc.key = {LandmarkKind::Pose, c->landmarkID};
-			lc.relative.key = lc.key;
-			lc.relative.z.resize(3);
-			lc.relative.z << c->landmarkPoseInRobot.x(), c->landmarkPoseInRobot.y(),
-				c->landmarkPoseInRobot.phi();
-			lc.relative.R = c->landmarkPoseInRobotCov.asEigen();
-			out.creations.push_back(std::move(lc));
-		}
+			addCreation(*c, out);
 		else if (auto h = std::dynamic_pointer_cast<CObservationHeadingChange>(obs))
-		{
-			m_stats.headingChangesSeen++;
-			if (!std::isfinite(h->dphi) || !std::isfinite(h->stdDphi) || h->stdDphi < 0)
-				throw InputError("heading change of '" + h->sensorLabel + "' is not finite or has a negative std");
-			if (!(h->previousTimestamp < h->timestamp))
-				throw InputError("heading change of '" + h->sensorLabel + "' starts at " +
-					std::to_string(mrpt::Clock::toDouble(h->previousTimestamp)) + ", not before its own time " +
-					std::to_string(mrpt::Clock::toDouble(h->timestamp)));
-			if (!headingChange.enabled) continue;
-			const double s = headingChange.std_scale * h->stdDphi;
-			const HeadingChangeMeasurement m{
-				h->previousTimestamp, h->timestamp, h->dphi, s * s + headingChange.min_std * headingChange.min_std};
-			if (!out.headingChange)
-				m_stats.headingChangesPassed++;
-			else if (out.headingChange->variance <= m.variance)
-				continue;
-			out.headingChange = m;
-		}
+			addHeadingChange(*h, out);
 		else if (auto br = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(obs))
-		{
-			const double stdR = rangeBearing.std_range > 0 ? rangeBearing.std_range
-														   : br->sensor_std_range;
-			const double stdB = rangeBearing.std_bearing > 0
-				? rangeBearing.std_bearing
-				: br->sensor_std_yaw;
-			for (const auto& d : br->sensedData)
-			{
-				m_stats.rangeBearingSeen++;
-				if (!std::isfinite(d.range) || !std::isfinite(d.yaw))
-					throw InputError(
-						"range-bearing measurement of landmark " +
-						std::to_string(d.landmarkID) + " is not finite");
-				if (d.landmarkID < 0)
-				{
-					m_stats.rejectedNoLandmarkID++;
-					continue;
-				}
-				if (d.range < rangeBearing.min_range ||
-					(rangeBearing.max_range > 0 && d.range > rangeBearing.max_range))
-				{
-					m_stats.rejectedRangeLimits++;
-					continue;
-				}
-				if (!(stdR > 0) || !(stdB > 0))
-					throw InputError(
-						"range-bearing observation '" + br->sensorLabel +
-						"' has no noise figure: set [vslam_range_bearing] "
-						"std_range and std_bearing_deg");
-				if (!(stdR < 1e6) || !(stdB <= 2 * M_PI) || !(std::abs(d.range) < 1e6))
-					throw InputError("range-bearing observation '" + br->sensorLabel +
-						"': range " + std::to_string(d.range) + " m, noise " + std::to_string(stdR) +
-						" m / " + std::to_string(stdB) + " rad are beyond any sensor: corrupt data");
-				const auto& sp = br->sensorLocationOnRobot;
-				if (!std::isfinite(sp.x()) || !std::isfinite(sp.y()) || !std::isfinite(sp.yaw()) ||
-					std::abs(sp.x()) > 1e3 || std::abs(sp.y()) > 1e3)
-					throw InputError("range-bearing observation '" + br->sensorLabel +
-						"': sensor pose on the robot is not finite or is kilometres away: corrupt data");
-				m_stats.rangeBearingAccepted++;
-				LandmarkMeasurement m;
-				m.key = {LandmarkKind::Point, d.landmarkID};
-				m.z.resize(2);
-				m.z << d.range, d.yaw;
-				m.R = MatN::Zero(2, 2);
-				m.R.diagonal() << stdR * stdR, stdB * stdB;
-				m.sensorPose = planar(br->sensorLocationOnRobot);
-				out.measurements.push_back(std::move(m));
-			}
-		}
+			addRangeBearing(*br, out);
 	}
 	return out;
+}
+
+void CMeasurementExtractor::addVisual(const CObservationVisualLandmark& v, FrameMeasurements& out)
+{
+	m_stats.visualSeen++;
+	if (!finite(v.relPose))
+		throw InputError("visual measurement of landmark " + std::to_string(v.landmarkID) + " has a non-finite pose");
+	switch (preFilter.check(v))
+	{
+		case CPreFilter::Verdict::RejectedProjErrRMS:
+			m_stats.rejectedProjErrRMS++;
+			return;
+		case CPreFilter::Verdict::RejectedNPoints:
+			m_stats.rejectedNPoints++;
+			return;
+		case CPreFilter::Verdict::RejectedSlope:
+			m_stats.rejectedSlope++;
+			return;
+		case CPreFilter::Verdict::Accepted:
+			break;
+	}
+	m_stats.visualAccepted++;
+	LandmarkMeasurement m;
+	m.key = {LandmarkKind::Pose, v.landmarkID};
+	m.z.resize(3);
+	m.z << v.relPose.x(), v.relPose.y(), v.relPose.phi();
+	m.R = MatN::Zero(3, 3);
+	m.R.diagonal() << visual.std_dx * visual.std_dx, visual.std_dy * visual.std_dy, visual.std_dphi * visual.std_dphi;
+	if (visual.predicted_cov_scale > 0)
+	{
+		const auto& P = v.relPoseCov.asEigen();
+		if (!P.allFinite() || (P.diagonal().array() < 0).any())
+			throw InputError("visual measurement of landmark " + std::to_string(v.landmarkID) +
+				" has a predicted covariance that is not finite or has a negative variance");
+		m.R += visual.predicted_cov_scale * visual.predicted_cov_scale * P;
+	}
+	out.measurements.push_back(std::move(m));
+}
+
+void CMeasurementExtractor::addCreation(const CObservationLandmarkCreated& c, FrameMeasurements& out)
+{
+	m_stats.creationsSeen++;
+	if (!finite(c.landmarkPoseInRobot) || !c.landmarkPoseInRobotCov.asEigen().allFinite())
+		throw InputError("creation of landmark " + std::to_string(c.landmarkID) + " has a non-finite pose");
+	LandmarkCreation lc;
+	lc.key = {LandmarkKind::Pose, c.landmarkID};
+	lc.relative.key = lc.key;
+	lc.relative.z.resize(3);
+	lc.relative.z << c.landmarkPoseInRobot.x(), c.landmarkPoseInRobot.y(), c.landmarkPoseInRobot.phi();
+	lc.relative.R = c.landmarkPoseInRobotCov.asEigen();
+	out.creations.push_back(std::move(lc));
+}
+
+void CMeasurementExtractor::addHeadingChange(const CObservationHeadingChange& h, FrameMeasurements& out)
+{
+	m_stats.headingChangesSeen++;
+	if (!std::isfinite(h.dphi) || !std::isfinite(h.stdDphi) || h.stdDphi < 0)
+		throw InputError("heading change of '" + h.sensorLabel + "' is not finite or has a negative std");
+	if (!(h.previousTimestamp < h.timestamp))
+		throw InputError("heading change of '" + h.sensorLabel + "' starts at " +
+			std::to_string(mrpt::Clock::toDouble(h.previousTimestamp)) + ", not before its own time " +
+			std::to_string(mrpt::Clock::toDouble(h.timestamp)));
+	if (!headingChange.enabled) return;
+	const double s = headingChange.std_scale * h.stdDphi;
+	const HeadingChangeMeasurement m{
+		h.previousTimestamp, h.timestamp, h.dphi, s * s + headingChange.min_std * headingChange.min_std};
+	if (!out.headingChange)
+		m_stats.headingChangesPassed++;
+	else if (out.headingChange->variance <= m.variance)
+		return;
+	out.headingChange = m;
+}
+
+void CMeasurementExtractor::addRangeBearing(const mrpt::obs::CObservationBearingRange& br, FrameMeasurements& out)
+{
+	const double stdR = rangeBearing.std_range > 0 ? rangeBearing.std_range : br.sensor_std_range;
+	const double stdB = rangeBearing.std_bearing > 0 ? rangeBearing.std_bearing : br.sensor_std_yaw;
+	for (const auto& d : br.sensedData)
+	{
+		m_stats.rangeBearingSeen++;
+		if (!std::isfinite(d.range) || !std::isfinite(d.yaw))
+			throw InputError("range-bearing measurement of landmark " + std::to_string(d.landmarkID) + " is not finite");
+		if (d.landmarkID < 0)
+		{
+			m_stats.rejectedNoLandmarkID++;
+			continue;
+		}
+		if (d.range < rangeBearing.min_range || (rangeBearing.max_range > 0 && d.range > rangeBearing.max_range))
+		{
+			m_stats.rejectedRangeLimits++;
+			continue;
+		}
+		if (!(stdR > 0) || !(stdB > 0))
+			throw InputError("range-bearing observation '" + br.sensorLabel +
+				"' has no noise figure: set [vslam_range_bearing] std_range and std_bearing_deg");
+		if (!(stdR < 1e6) || !(stdB <= 2 * M_PI) || !(std::abs(d.range) < 1e6))
+			throw InputError("range-bearing observation '" + br.sensorLabel + "': range " + std::to_string(d.range) +
+				" m, noise " + std::to_string(stdR) + " m / " + std::to_string(stdB) +
+				" rad are beyond any sensor: corrupt data");
+		const auto& sp = br.sensorLocationOnRobot;
+		if (!std::isfinite(sp.x()) || !std::isfinite(sp.y()) || !std::isfinite(sp.yaw()) || std::abs(sp.x()) > 1e3 ||
+			std::abs(sp.y()) > 1e3)
+			throw InputError("range-bearing observation '" + br.sensorLabel +
+				"': sensor pose on the robot is not finite or is kilometres away: corrupt data");
+		m_stats.rangeBearingAccepted++;
+		LandmarkMeasurement m;
+		m.key = {LandmarkKind::Point, d.landmarkID};
+		m.z.resize(2);
+		m.z << d.range, d.yaw;
+		m.R = MatN::Zero(2, 2);
+		m.R.diagonal() << stdR * stdR, stdB * stdB;
+		m.sensorPose = planar(br.sensorLocationOnRobot);
+		out.measurements.push_back(std::move(m));
+	}
 }

@@ -18,8 +18,17 @@
 #include <optional>
 #include <vector>
 
+namespace mrpt::obs
+{
+class CObservationBearingRange;
+}
+
 namespace vslam
 {
+class CObservationVisualLandmark;
+class CObservationLandmarkCreated;
+class CObservationHeadingChange;
+
 /** A landmark-created event: the new landmark's frame relative to the
  * robot (z, pose kind) with its uncertainty (R). */
 struct LandmarkCreation
@@ -140,6 +149,12 @@ class CMeasurementExtractor
 	const TExtractionStats& stats() const { return m_stats; }
 
    private:
+	void addVisual(const CObservationVisualLandmark& v, FrameMeasurements& out);
+	void addCreation(const CObservationLandmarkCreated& c, FrameMeasurements& out);
+	/** The frame keeps its most certain heading change. */
+	void addHeadingChange(const CObservationHeadingChange& h, FrameMeasurements& out);
+	void addRangeBearing(const mrpt::obs::CObservationBearingRange& br, FrameMeasurements& out);
+
 	TExtractionStats m_stats;
 };
 

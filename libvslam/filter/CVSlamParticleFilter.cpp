@@ -168,19 +168,9 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	m_stats.frames++;
 	m_lastFrame = TFrameReport();
 	m_lastFrame.timestamp = frame.timestamp;
-
-	// Split measurements into known landmarks and first sightings.
 	std::vector<KnownMeasurement> known;
 	std::vector<const LandmarkMeasurement*> firstSightings;
-	for (const auto& m : frame.measurements)
-	{
-		if (const auto slot = m_index.find(m.key))
-			known.push_back({&m, *slot});
-		else if (std::none_of(
-					 firstSightings.begin(), firstSightings.end(),
-					 [&](const auto* f) { return f->key == m.key; }))
-			firstSightings.push_back(&m);
-	}
+	splitByLandmark(frame, known, firstSightings);
 	m_lastFrame.measurements = known.size();
 
 	// Which measurements the predicted particle cloud explains, and what the
@@ -190,28 +180,14 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	const bool optimal = m_options.mixture.nominal_proposal == CMixtureProposal::Nominal::Optimal;
 	std::vector<PoseGaussianProposal>& proposals = m_proposalBuffer;
 	if (!known.empty()) explainedFractions(known, mp, spreadXY, optimal ? &proposals : nullptr);
-	const double minFraction = m_options.kidnap.explained_min_fraction;
-	std::vector<CKidnapDetector::Evidence> evidence;
 	double bestFraction = 0;
-	for (const auto& k : known)
-	{
-		evidence.push_back({k, m_index.entry(k.slot).created, k.plausibleFraction >= minFraction});
-		bestFraction = std::max(bestFraction, k.explainedFraction);
-	}
-	m_lastFrame.explainedFraction = bestFraction;
-	const auto verdict = m_kidnap.update(
-		frame.timestamp, evidence,
-		{mp, m_particles[bestParticleIndex()].d.bank, m_particles.size(),
-		 m_likelihood, m_rng});
-	m_stats.unexplainedFrames += verdict == CKidnapDetector::Verdict::Unexplained ||
-		verdict == CKidnapDetector::Verdict::Kidnapped;
-	m_lastFrame.hypothesisSupport = m_kidnap.hypothesis().support();
+	const auto verdict = kidnapVerdict(frame.timestamp, known, mp, bestFraction);
 
 	// A kidnap declared or reverted moves the whole cloud: the odometry
 	// since the last frame no longer links the poses.
 	const bool cloudMoved = verdict == CKidnapDetector::Verdict::Kidnapped ||
 		verdict == CKidnapDetector::Verdict::Reverted;
-	std::vector<std::pair<size_t, const LandmarkMeasurement*>> toReinitialize;
+	LandmarksToPlace toReinitialize;
 	std::vector<KnownMeasurement> used;
 	if (cloudMoved)
 	{
@@ -232,10 +208,9 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		// recognition would move a correct landmark.)
 		for (const auto& k : known)
 		{
-			const auto& entry = m_index.entry(k.slot);
-			if (entry.suspect)
+			if (m_index.entry(k.slot).suspect)
 				toReinitialize.emplace_back(k.slot, k.m);
-			else if (k.plausibleFraction >= minFraction)
+			else if (k.plausibleFraction >= m_options.kidnap.explained_min_fraction)
 				used.push_back(k);
 			else
 				m_stats.rejectedUnexplained++;
@@ -251,13 +226,53 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		if (cloudMoved) m_graph->loseOdometry();
 	}
 	m_odometry.reset();
+	const PlacedLandmarks placed = placeLandmarks(frame, firstSightings, toReinitialize);
+	if (m_graph) updateLoopClosureGraph(frame.timestamp, used, placed);
+	for (auto& p : m_particles) p.d.path.push(frame.timestamp, p.d.pose);
+	m_lastFrame.essAfterUpdate = ESS();
+}
 
+void CVSlamParticleFilter::splitByLandmark(const FrameMeasurements& frame, std::vector<KnownMeasurement>& known,
+	std::vector<const LandmarkMeasurement*>& firstSightings) const
+{
+	for (const auto& m : frame.measurements)
+	{
+		if (const auto slot = m_index.find(m.key))
+			known.push_back({&m, *slot});
+		else if (std::none_of(
+					 firstSightings.begin(), firstSightings.end(), [&](const auto* f) { return f->key == m.key; }))
+			firstSightings.push_back(&m);
+	}
+}
+
+CKidnapDetector::Verdict CVSlamParticleFilter::kidnapVerdict(mrpt::Clock::time_point t,
+	const std::vector<KnownMeasurement>& known, const MotionPrior& mp, double& bestFraction)
+{
+	const double minFraction = m_options.kidnap.explained_min_fraction;
+	std::vector<CKidnapDetector::Evidence> evidence;
+	bestFraction = 0;
+	for (const auto& k : known)
+	{
+		evidence.push_back({k, m_index.entry(k.slot).created, k.plausibleFraction >= minFraction});
+		bestFraction = std::max(bestFraction, k.explainedFraction);
+	}
+	m_lastFrame.explainedFraction = bestFraction;
+	const auto verdict = m_kidnap.update(
+		t, evidence, {mp, m_particles[bestParticleIndex()].d.bank, m_particles.size(), m_likelihood, m_rng});
+	m_stats.unexplainedFrames +=
+		verdict == CKidnapDetector::Verdict::Unexplained || verdict == CKidnapDetector::Verdict::Kidnapped;
+	m_lastFrame.hypothesisSupport = m_kidnap.hypothesis().support();
+	return verdict;
+}
+
+CVSlamParticleFilter::PlacedLandmarks CVSlamParticleFilter::placeLandmarks(const FrameMeasurements& frame,
+	const std::vector<const LandmarkMeasurement*>& firstSightings, const LandmarksToPlace& toReinitialize)
+{
 	// The first landmark fixes the map's frame: see anchorMapFrame().
-	const bool createsFirstLandmark =
-		m_index.size() == 0 && (!firstSightings.empty() || !frame.creations.empty());
+	const bool createsFirstLandmark = m_index.size() == 0 && (!firstSightings.empty() || !frame.creations.empty());
 	if (createsFirstLandmark && m_options.landmarks.anchor_first_landmark) anchorMapFrame();
 	// New landmarks start from each particle's own (new) pose.
-	std::vector<std::pair<size_t, LandmarkMeasurement>> placed;  // for the pose graph
+	PlacedLandmarks placed;
 	for (const auto* m : firstSightings)
 	{
 		createLandmark(m->key, *m, frame.timestamp);
@@ -269,11 +284,8 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		reinitializeLandmark(slot, *m, frame.timestamp);
 		placed.emplace_back(slot, *m);
 	}
-	const Eigen::Matrix3d initCov = Eigen::Vector3d(
-		m_options.landmarks.init_std_xy * m_options.landmarks.init_std_xy,
-		m_options.landmarks.init_std_xy * m_options.landmarks.init_std_xy,
-		m_options.landmarks.init_std_phi * m_options.landmarks.init_std_phi)
-										.asDiagonal();
+	const double xy = m_options.landmarks.init_std_xy, phi = m_options.landmarks.init_std_phi;
+	const Eigen::Matrix3d initCov = Eigen::Vector3d(xy * xy, xy * xy, phi * phi).asDiagonal();
 	for (const auto& c : frame.creations)
 	{
 		LandmarkMeasurement rel = c.relative;
@@ -291,9 +303,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 			m_stats.landmarksCreated++;
 		}
 	}
-	if (m_graph) updateLoopClosureGraph(frame.timestamp, used, placed);
-	for (auto& p : m_particles) p.d.path.push(frame.timestamp, p.d.pose);
-	m_lastFrame.essAfterUpdate = ESS();
+	return placed;
 }
 
 void CVSlamParticleFilter::moveParticlesTo(const std::vector<se2::Pose>& poses)

@@ -187,6 +187,20 @@ class CVSlamParticleFilter
 	std::optional<LastKidnap> m_lastKidnap;
 
 	void updateWithFrame(const FrameMeasurements& frame);
+	/** The frame's measurements of known landmarks, and the first sighting
+	 * of each landmark not yet in the map. */
+	void splitByLandmark(const FrameMeasurements& frame, std::vector<KnownMeasurement>& known,
+		std::vector<const LandmarkMeasurement*>& firstSightings) const;
+	/** What the kidnap test makes of the measurements the predicted cloud
+	 * explains (their fractions already computed); the best fraction. */
+	CKidnapDetector::Verdict kidnapVerdict(mrpt::Clock::time_point t, const std::vector<KnownMeasurement>& known,
+		const MotionPrior& mp, double& bestFraction);
+	using LandmarksToPlace = std::vector<std::pair<size_t, const LandmarkMeasurement*>>;
+	using PlacedLandmarks = std::vector<std::pair<size_t, LandmarkMeasurement>>;
+	/** Creates the first-sighted and front-end-created landmarks and
+	 * re-initializes the suspect ones; what was placed, for the pose graph. */
+	PlacedLandmarks placeLandmarks(const FrameMeasurements& frame,
+		const std::vector<const LandmarkMeasurement*>& firstSightings, const LandmarksToPlace& toReinitialize);
 	/** Fuses a heading change into the pending odometry (COdometryAccumulator). */
 	void fuseHeadingChange(const HeadingChangeMeasurement& h);
 	void moveParticlesTo(const std::vector<se2::Pose>& poses);
