@@ -267,7 +267,132 @@ const char* kUsage =
 	"                       [--oracle-rawlog FILE [--oracle-kind all|outliers|inliers|drop-outliers|scale]\n"
 	"                        [--oracle-scale-bias B]]]\n"
 	"       vslam-frontend --print-default-config\n";
+
+/** The command line, checked. */
+struct FrontEndCommand
+{
+	std::string in, out, iniFile, groundTruthFile, csvFile, oracleFile, headingCsvFile;
+	std::vector<vslam::config::Override> overrides;
+	OracleKind oracleKind = OracleKind::All;
+	std::optional<double> oracleScaleBias;
+};
+
+FrontEndCommand parseCommand(const vslam::ToolArguments& args)
+{
+	FrontEndCommand c;
+	if (args.positional.size() != 2) throw std::invalid_argument("expected IN.rawlog OUT.rawlog");
+	c.in = args.positional[0];
+	c.out = args.positional[1];
+	c.overrides = args.overrides;
+	c.iniFile = args.value("--config");
+	c.groundTruthFile = args.value("--ground-truth");
+	c.csvFile = args.value("--accuracy-csv");
+	c.headingCsvFile = args.value("--heading-csv");
+	c.oracleFile = args.value("--oracle-rawlog");
+	if (args.values.count("--oracle-kind")) c.oracleKind = parseOracleKind(args.value("--oracle-kind"));
+	if (args.values.count("--oracle-scale-bias"))
+	{
+		c.oracleScaleBias = vslam::numberArgument("--oracle-scale-bias", args.value("--oracle-scale-bias"));
+		if (!(*c.oracleScaleBias > -1)) throw std::invalid_argument("--oracle-scale-bias must be above -1");
+	}
+	if ((!c.csvFile.empty() || !c.oracleFile.empty() || !c.headingCsvFile.empty()) && c.groundTruthFile.empty())
+		throw std::invalid_argument("--accuracy-csv, --heading-csv and --oracle-rawlog need --ground-truth");
+	if (c.oracleScaleBias && (c.oracleFile.empty() || c.oracleKind != OracleKind::Scale))
+		throw std::invalid_argument("--oracle-scale-bias goes with --oracle-rawlog and --oracle-kind scale");
+	return c;
 }
+
+/** The rawlog through the front-end: the output steps, and what the
+ * accuracy figures need of the measurements it made. */
+struct FrontEndPass
+{
+	std::vector<vslam::ActionFramePair> steps;
+	vslam::ImagesToMeasurementsResult total;
+	std::vector<vslam::LandmarkMeasurementRecord> records;
+	std::vector<vslam::HeadingChangeRecord> headingRecords;
+	std::map<int64_t, double> creationTimes;
+	std::map<mrpt::Clock::time_point, double> odometryHeadingAtImage;
+
+	/** Keeps what the front-end made of one sensory frame. */
+	void record(const mrpt::obs::CSensoryFrame& sf)
+	{
+		using namespace vslam;
+		for (const auto& o : sf)
+		{
+			if (const auto* m = dynamic_cast<const CObservationVisualLandmark*>(o.get()))
+				records.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID,
+					{m->relPose.x(), m->relPose.y(), m->relPose.phi()}, m->ProjErrRMS, m->NPoints, m->Slope, m->Height,
+					std::sqrt(m->relPoseCov(0, 0)), std::sqrt(m->relPoseCov(1, 1)), std::sqrt(m->relPoseCov(2, 2)),
+					m->SlopeStd});
+			else if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
+				creationTimes[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
+			else if (const auto* h = dynamic_cast<const CObservationHeadingChange*>(o.get()))
+			{
+				const auto from = odometryHeadingAtImage.find(h->previousTimestamp);
+				const auto to = odometryHeadingAtImage.find(h->timestamp);
+				if (from != odometryHeadingAtImage.end() && to != odometryHeadingAtImage.end())
+					headingRecords.push_back({mrpt::Clock::toDouble(h->previousTimestamp),
+						mrpt::Clock::toDouble(h->timestamp), h->dphi, h->stdDphi, se2::wrap(to->second - from->second),
+						static_cast<int>(h->NInliers), static_cast<int>(h->NMatches), h->rmsPx});
+			}
+		}
+	}
+};
+
+FrontEndPass runFrontEnd(vslam::CVisualFrontEnd& frontEnd, const std::string& in)
+{
+	using namespace vslam;
+	FrontEndPass pass;
+	CRawlogReader reader(in);
+	mrpt::poses::CPose2D odometry;
+	RawlogStep step;
+	while (reader.next(step))
+	{
+		if (step.action)
+			if (const auto u = odometryIncrement(*step.action)) odometry = odometry + *u;
+		for (const auto& o : *step.sf)
+			if (dynamic_cast<const mrpt::obs::CObservationImage*>(o.get()))
+				pass.odometryHeadingAtImage[o->timestamp] = odometry.phi();
+		const auto r = replaceImagesWithMeasurements(
+			frontEnd, *step.sf, odometry, "rawlog '" + in + "', entry " + std::to_string(step.entry));
+		pass.total.images += r.images;
+		pass.total.measurements += r.measurements;
+		pass.total.created += r.created;
+		pass.total.pruned += r.pruned;
+		pass.total.headingChanges += r.headingChanges;
+		pass.record(*step.sf);
+		auto action = step.action ? step.action : mrpt::obs::CActionCollection::Create();
+		pass.steps.emplace_back(action, step.sf);
+	}
+	return pass;
+}
+
+void printSummary(const vslam::CVisualFrontEnd& frontEnd, const vslam::ImagesToMeasurementsResult& total,
+	double seconds, const std::string& out, bool headingChange)
+{
+	const auto& t = frontEnd.totalSeconds();
+	const auto& db = frontEnd.database();
+	const auto perImage = [&](double s) { return total.images ? 1000 * s / total.images : 0.0; };
+	std::cout << "vslam-frontend: " << total.images << " images -> " << total.measurements << " landmark measurements, "
+			  << total.created << " landmarks created, " << total.pruned << " pruned; " << db.size()
+			  << " in the database (" << (db.size() ? db.landmarkBytes() / db.size() : 0) << " bytes each, index "
+			  << db.indexBytes() << " bytes)\n"
+			  << "vslam-frontend: ms per image: features " << perImage(t.features) << ", search " << perImage(t.search)
+			  << ", pose " << perImage(t.pose) << ", creation " << perImage(t.creation) << ", heading change "
+			  << perImage(t.heading) << "; total " << seconds << " s -> " << out << "\n";
+	if (headingChange)
+		std::cout << "vslam-frontend: heading changes: " << frontEnd.headingChangesMeasured() << " measured, "
+				  << frontEnd.headingChangesFailed() << " image pairs without one\n";
+	std::cout << "vslam-frontend: landmark creation: " << frontEnd.creationAttempts() << " attempts, " << total.created
+			  << " built";
+	for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
+	std::cout << "\n";
+	std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
+			  << " degenerate, " << frontEnd.ambiguousRecognitions() << " ambiguous (recognition_ambiguity_min_gap), "
+			  << frontEnd.narrowRecognitions() << " narrow (recognition_min_spread_deg), "
+			  << frontEnd.inconsistentRecognitions() << " inconsistent with the odometry (recognition_odometry_gate_s)\n";
+}
+}  // namespace
 
 int main(int argc, const char** argv)
 {
@@ -275,148 +400,42 @@ int main(int argc, const char** argv)
 	registerObservationClasses();
 	keepImageBuffersInTheProcess();
 	return vslam::runTool("vslam-frontend", kUsage, [&]() -> int {
-		std::vector<std::string> positional;
-		std::vector<config::Override> overrides;
-		std::string iniFile, groundTruthFile, csvFile, oracleFile, headingCsvFile;
-		OracleKind oracleKind = OracleKind::All;
-		std::optional<double> oracleScaleBias;
-		for (int i = 1; i < argc; i++)
+		const ToolArguments args = parseToolArguments(argc, argv,
+			{"--config", "--ground-truth", "--accuracy-csv", "--heading-csv", "--oracle-rawlog", "--oracle-kind",
+				"--oracle-scale-bias"},
+			{"--help", "--print-default-config"});
+		if (args.has("--help"))
 		{
-			const std::string a = argv[i];
-			if (a == "--help" || a == "-h")
-			{
-				std::cout << kUsage;
-				return 0;
-			}
-			if (a == "--print-default-config")
-			{
-				std::cout << config::toIniText(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
-				return 0;
-			}
-			if ((a == "--set" || a == "--config" || a == "--ground-truth" || a == "--accuracy-csv" ||
-					a == "--oracle-rawlog" || a == "--oracle-kind" || a == "--oracle-scale-bias" ||
-					a == "--heading-csv") &&
-				i + 1 >= argc)
-				throw std::invalid_argument(a + " needs a value");
-			if (a == "--set")
-				overrides.push_back(config::parseOverride(argv[++i]));
-			else if (a == "--config")
-				iniFile = argv[++i];
-			else if (a == "--ground-truth")
-				groundTruthFile = argv[++i];
-			else if (a == "--accuracy-csv")
-				csvFile = argv[++i];
-			else if (a == "--heading-csv")
-				headingCsvFile = argv[++i];
-			else if (a == "--oracle-rawlog")
-				oracleFile = argv[++i];
-			else if (a == "--oracle-kind")
-				oracleKind = parseOracleKind(argv[++i]);
-			else if (a == "--oracle-scale-bias")
-			{
-				oracleScaleBias = numberArgument(a, argv[++i]);
-				if (!(*oracleScaleBias > -1)) throw std::invalid_argument("--oracle-scale-bias must be above -1");
-			}
-			else if (a.rfind("--", 0) == 0)
-				throw std::invalid_argument("unknown option '" + a + "'");
-			else
-				positional.push_back(a);
+			std::cout << kUsage;
+			return 0;
 		}
-		if (positional.size() != 2) throw std::invalid_argument("expected IN.rawlog OUT.rawlog");
-		if ((!csvFile.empty() || !oracleFile.empty() || !headingCsvFile.empty()) && groundTruthFile.empty())
-			throw std::invalid_argument("--accuracy-csv, --heading-csv and --oracle-rawlog need --ground-truth");
-		if (oracleScaleBias && (oracleFile.empty() || oracleKind != OracleKind::Scale))
-			throw std::invalid_argument("--oracle-scale-bias goes with --oracle-rawlog and --oracle-kind scale");
-		const TVisualFrontEndOptions options = loadFrontEndOptions(iniFile, overrides);
+		if (args.has("--print-default-config"))
+		{
+			std::cout << config::toIniText(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
+			return 0;
+		}
+		const FrontEndCommand c = parseCommand(args);
+		const TVisualFrontEndOptions options = loadFrontEndOptions(c.iniFile, c.overrides);
 		// Sigma_vis and the pre-filter of the INI and the --set overrides, for
 		// the accuracy figures; every vslam key checked before the long run.
-		const TVSlamFilterOptions filter = loadFilterOptions(iniFile, overrides);
+		const TVSlamFilterOptions filter = loadFilterOptions(c.iniFile, c.overrides);
 
 		const auto start = std::chrono::steady_clock::now();
-		CRawlogReader reader(positional[0]);
 		CVisualFrontEnd frontEnd(options);
-		std::vector<ActionFramePair> steps;
-		mrpt::poses::CPose2D odometry;
-		ImagesToMeasurementsResult total;
-		std::vector<LandmarkMeasurementRecord> records;
-		std::vector<HeadingChangeRecord> headingRecords;
-		std::map<int64_t, double> creationTimes;
-		std::map<mrpt::Clock::time_point, double> odometryHeadingAtImage;
-		RawlogStep step;
-		while (reader.next(step))
+		FrontEndPass pass = runFrontEnd(frontEnd, c.in);
+		writeActionFrameRawlog(c.out, pass.steps);
+		const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+		printSummary(frontEnd, pass.total, seconds, c.out, options.heading_change);
+		if (!c.groundTruthFile.empty()) printAccuracy(pass.records, pass.creationTimes, c.groundTruthFile, filter, c.csvFile);
+		if (!c.groundTruthFile.empty() && options.heading_change)
+			printHeadingChangeAccuracy(pass.headingRecords, c.groundTruthFile, c.headingCsvFile);
+		if (!c.oracleFile.empty())
 		{
-			if (step.action)
-				if (const auto u = odometryIncrement(*step.action)) odometry = odometry + *u;
-			for (const auto& o : *step.sf)
-				if (dynamic_cast<const mrpt::obs::CObservationImage*>(o.get()))
-					odometryHeadingAtImage[o->timestamp] = odometry.phi();
-			const auto r = replaceImagesWithMeasurements(frontEnd, *step.sf, odometry,
-				"rawlog '" + positional[0] + "', entry " + std::to_string(step.entry));
-			total.images += r.images;
-			total.measurements += r.measurements;
-			total.created += r.created;
-			total.pruned += r.pruned;
-			total.headingChanges += r.headingChanges;
-			for (const auto& o : *step.sf)
-			{
-				if (const auto* m = dynamic_cast<const CObservationVisualLandmark*>(o.get()))
-					records.push_back({mrpt::Clock::toDouble(m->timestamp), m->landmarkID,
-						{m->relPose.x(), m->relPose.y(), m->relPose.phi()}, m->ProjErrRMS, m->NPoints, m->Slope,
-						m->Height, std::sqrt(m->relPoseCov(0, 0)), std::sqrt(m->relPoseCov(1, 1)),
-						std::sqrt(m->relPoseCov(2, 2)), m->SlopeStd});
-				else if (const auto* c = dynamic_cast<const CObservationLandmarkCreated*>(o.get()))
-					creationTimes[c->landmarkID] = mrpt::Clock::toDouble(c->timestamp);
-				else if (const auto* h = dynamic_cast<const CObservationHeadingChange*>(o.get()))
-				{
-					const auto from = odometryHeadingAtImage.find(h->previousTimestamp);
-					const auto to = odometryHeadingAtImage.find(h->timestamp);
-					if (from != odometryHeadingAtImage.end() && to != odometryHeadingAtImage.end())
-						headingRecords.push_back({mrpt::Clock::toDouble(h->previousTimestamp),
-							mrpt::Clock::toDouble(h->timestamp), h->dphi, h->stdDphi,
-							se2::wrap(to->second - from->second), static_cast<int>(h->NInliers),
-							static_cast<int>(h->NMatches), h->rmsPx});
-				}
-			}
-			auto action = step.action ? step.action : mrpt::obs::CActionCollection::Create();
-			steps.emplace_back(action, step.sf);
-		}
-		writeActionFrameRawlog(positional[1], steps);
-		const double seconds =
-			std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-		const auto& t = frontEnd.totalSeconds();
-		const auto& db = frontEnd.database();
-		const auto perImage = [&](double s) { return total.images ? 1000 * s / total.images : 0.0; };
-		std::cout << "vslam-frontend: " << total.images << " images -> " << total.measurements
-				  << " landmark measurements, " << total.created << " landmarks created, " << total.pruned
-				  << " pruned; " << db.size() << " in the database ("
-				  << (db.size() ? db.landmarkBytes() / db.size() : 0) << " bytes each, index "
-				  << db.indexBytes() << " bytes)\n"
-				  << "vslam-frontend: ms per image: features " << perImage(t.features) << ", search "
-				  << perImage(t.search) << ", pose " << perImage(t.pose) << ", creation "
-				  << perImage(t.creation) << ", heading change " << perImage(t.heading) << "; total " << seconds
-				  << " s -> " << positional[1] << "\n";
-		if (options.heading_change)
-			std::cout << "vslam-frontend: heading changes: " << frontEnd.headingChangesMeasured() << " measured, "
-					  << frontEnd.headingChangesFailed() << " image pairs without one\n";
-		std::cout << "vslam-frontend: landmark creation: " << frontEnd.creationAttempts() << " attempts, "
-				  << total.created << " built";
-		for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
-		std::cout << "\n";
-		std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
-				  << " degenerate, " << frontEnd.ambiguousRecognitions()
-				  << " ambiguous (recognition_ambiguity_min_gap), " << frontEnd.narrowRecognitions()
-				  << " narrow (recognition_min_spread_deg), " << frontEnd.inconsistentRecognitions()
-				  << " inconsistent with the odometry (recognition_odometry_gate_s)\n";
-		if (!groundTruthFile.empty()) printAccuracy(records, creationTimes, groundTruthFile, filter, csvFile);
-		if (!groundTruthFile.empty() && options.heading_change)
-			printHeadingChangeAccuracy(headingRecords, groundTruthFile, headingCsvFile);
-		if (!oracleFile.empty())
-		{
-			replaceMeasurementsWithTruth(steps, groundTruthFile, oracleKind, filter.visual, oracleScaleBias.value_or(0));
-			writeActionFrameRawlog(oracleFile, steps);
+			replaceMeasurementsWithTruth(pass.steps, c.groundTruthFile, c.oracleKind, filter.visual, c.oracleScaleBias.value_or(0));
+			writeActionFrameRawlog(c.oracleFile, pass.steps);
 			std::cout << "vslam-frontend: the same with "
-					  << (oracleKind == OracleKind::Scale ? "the landmarks' scale errors taken out" : "true measurements")
-					  << " -> " << oracleFile << "\n";
+					  << (c.oracleKind == OracleKind::Scale ? "the landmarks' scale errors taken out" : "true measurements")
+					  << " -> " << c.oracleFile << "\n";
 		}
 		return 0;
 	});
