@@ -124,119 +124,140 @@ void writeErrorCsv(const std::string& file, const std::vector<std::pair<std::str
 				s.headingErrors[i] * 180 / M_PI);
 	if (std::fclose(f) != 0) throw vslam::InputError("cannot write '" + file + "'");
 }
+
+/** The command line. A mistake throws std::invalid_argument. */
+struct EvalCommand
+{
+	bool help = false;
+	vslam::AteOptions ate;
+	double from = 0, to = std::numeric_limits<double>::infinity();
+	std::vector<vslam::RpeOptions> windows;
+	std::vector<std::string> files;  //!< estimate, ground truth
+	std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile, scenePng;
+};
+
+EvalCommand parseCommand(int argc, const char** argv)
+{
+	using vslam::RpeOptions;
+	EvalCommand c;
+	for (int i = 1; i < argc; i++)
+	{
+		const std::string a = argv[i];
+		const bool hasValue = i + 1 < argc;
+		std::string* file = a == "--run" ? &c.runDir
+			: a == "--csv"                ? &c.csvFile
+			: a == "--plot"               ? &c.plotFile
+			: a == "--figures"            ? &c.figuresDir
+			: a == "--odometry"           ? &c.odometryFile
+			: a == "--world"              ? &c.worldFile
+			: a == "--landmarks"          ? &c.trueMapFile
+			: a == "--map"                ? &c.mapFile
+			: a == "--scene-png"          ? &c.scenePng
+										  : nullptr;
+		if (a == "--help" || a == "-h")
+			c.help = true;
+		else if (a == "--align")
+			c.ate.align = true;
+		else if (file && hasValue)
+			*file = argv[++i];
+		else if (a == "--max-gap" && hasValue)
+			c.ate.maxGap = positiveNumber(a, argv[++i]);
+		else if (a == "--from" && hasValue)
+			c.from = vslam::numberArgument(a, argv[++i]);
+		else if (a == "--to" && hasValue)
+			c.to = positiveNumber(a, argv[++i]);
+		else if ((a == "--rpe-time" || a == "--rpe-distance") && hasValue)
+		{
+			RpeOptions w;
+			w.window = a == "--rpe-time" ? RpeOptions::Window::Time : RpeOptions::Window::Distance;
+			w.delta = positiveNumber(a, argv[++i]);
+			c.windows.push_back(w);
+		}
+		else if (a.rfind("--", 0) == 0)
+			throw std::invalid_argument("unknown option '" + a + "' (or its value is missing)");
+		else
+			c.files.push_back(a);
+	}
+	if (c.help) return c;
+	if (!c.runDir.empty())
+	{
+		if (c.files.size() != 1) throw std::invalid_argument("expected --run DIR GROUND_TRUTH");
+		c.files.insert(c.files.begin(), c.runDir + "/estimated_path.tum");
+		if (c.odometryFile.empty() && std::filesystem::exists(c.runDir + "/odometry_path.tum"))
+			c.odometryFile = c.runDir + "/odometry_path.tum";
+		if (c.figuresDir.empty()) c.figuresDir = c.runDir + "/figures";
+		if (c.mapFile.empty()) c.mapFile = c.runDir + "/final_map.txt";
+	}
+	if (c.files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
+	if (!c.scenePng.empty() && c.runDir.empty()) throw std::invalid_argument("--scene-png needs --run DIR");
+	if (c.windows.empty()) c.windows.push_back(RpeOptions());  // 1 s, as the TUM tools
+	if (!(c.from < c.to)) throw std::invalid_argument("--from must be before --to");
+	if (!c.trueMapFile.empty() && c.mapFile.empty()) throw std::invalid_argument("--landmarks needs --map FILE (or --run)");
+	return c;
+}
+
+/** The figures and pictures asked for. */
+void writeFigures(const EvalCommand& c, const vslam::Trajectory& estimate, const vslam::Trajectory& truth,
+	const std::optional<vslam::Trajectory>& odometry, const vslam::AteStats& s)
+{
+	using namespace vslam;
+	std::optional<world::FloorPlan> plan;
+	if (!c.worldFile.empty()) plan = world::loadFloorPlan(c.worldFile, "/usr/share");
+	RunFigureSources src;
+	src.estimate = &estimate;
+	src.truth = &truth;
+	src.odometry = odometry ? &*odometry : nullptr;
+	src.plan = plan ? &*plan : nullptr;
+	src.runDir = c.runDir;
+	src.alignment = s.alignment;
+	src.maxGap = c.ate.maxGap;
+	if (!c.plotFile.empty()) writePathsFigure(src, {}, c.plotFile);
+	if (!c.figuresDir.empty())
+		for (const auto& f : writeRunFigures(src, c.figuresDir)) std::printf("figure: %s\n", f.c_str());
+	if (!c.scenePng.empty()) writeScenePicture(c.runDir + "/final_map.3Dscene", c.scenePng);
+}
+
+void evaluate(const EvalCommand& c)
+{
+	using namespace vslam;
+	const Trajectory whole = readTrajectory(c.files[0]), truth = readTrajectory(c.files[1]);
+	const double t0 = whole.empty() ? 0 : whole.front().t;
+	const Trajectory estimate = timeWindow(whole, t0, c.from, c.to);
+	if (estimate.empty() && !whole.empty()) throw InputError("'" + c.files[0] + "': no pose between --from and --to");
+	const AteStats s = report("", estimate, truth, c.ate, c.windows);
+	std::vector<std::pair<std::string, AteStats>> csv{{"estimate", s}};
+	std::optional<Trajectory> odometry;
+	if (!c.odometryFile.empty())
+	{
+		odometry = timeWindow(readTrajectory(c.odometryFile), t0, c.from, c.to);
+		AteOptions raw = c.ate;
+		raw.align = false;  // odometry starts where the truth does
+		csv.push_back({"odometry", report("odometry_", *odometry, truth, raw, c.windows)});
+	}
+	if (!c.csvFile.empty()) writeErrorCsv(c.csvFile, csv);
+	if (!c.trueMapFile.empty())
+	{
+		const LandmarkMap map = readLandmarkMap(c.mapFile, 0, 0), trueMap = readLandmarkMap(c.trueMapFile, 0, 0);
+		AteOptions align = c.ate;
+		align.align = true;
+		printMapError("map", computeMapError(map, trueMap));
+		printMapError("map_se2_aligned", computeMapError(map, trueMap, computeAte(estimate, truth, align).alignment));
+	}
+	writeFigures(c, estimate, truth, odometry, s);
+}
 }  // namespace
 
 int main(int argc, const char** argv)
 {
-	using namespace vslam;
 	try
 	{
-		AteOptions o;
-		double from = 0, to = std::numeric_limits<double>::infinity();
-		std::vector<RpeOptions> windows;
-		std::vector<std::string> files;
-		std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile, scenePng;
-		for (int i = 1; i < argc; i++)
+		const EvalCommand c = parseCommand(argc, argv);
+		if (c.help)
 		{
-			const std::string a = argv[i];
-			const bool hasValue = i + 1 < argc;
-			if (a == "--help" || a == "-h")
-			{
-				std::cout << kUsage;
-				return 0;
-			}
-			if (a == "--align")
-				o.align = true;
-			else if (a == "--max-gap" && hasValue)
-				o.maxGap = positiveNumber(a, argv[++i]);
-			else if (a == "--from" && hasValue)
-				from = vslam::numberArgument(a, argv[++i]);
-			else if (a == "--to" && hasValue)
-				to = positiveNumber(a, argv[++i]);
-			else if ((a == "--rpe-time" || a == "--rpe-distance") && hasValue)
-			{
-				RpeOptions w;
-				w.window = a == "--rpe-time" ? RpeOptions::Window::Time : RpeOptions::Window::Distance;
-				w.delta = positiveNumber(a, argv[++i]);
-				windows.push_back(w);
-			}
-			else if (a == "--run" && hasValue)
-				runDir = argv[++i];
-			else if (a == "--csv" && hasValue)
-				csvFile = argv[++i];
-			else if (a == "--plot" && hasValue)
-				plotFile = argv[++i];
-			else if (a == "--figures" && hasValue)
-				figuresDir = argv[++i];
-			else if (a == "--odometry" && hasValue)
-				odometryFile = argv[++i];
-			else if (a == "--world" && hasValue)
-				worldFile = argv[++i];
-			else if (a == "--landmarks" && hasValue)
-				trueMapFile = argv[++i];
-			else if (a == "--map" && hasValue)
-				mapFile = argv[++i];
-			else if (a == "--scene-png" && hasValue)
-				scenePng = argv[++i];
-			else if (a.rfind("--", 0) == 0)
-				throw std::invalid_argument("unknown option '" + a + "' (or its value is missing)");
-			else
-				files.push_back(a);
+			std::cout << kUsage;
+			return 0;
 		}
-		if (!runDir.empty())
-		{
-			if (files.size() != 1) throw std::invalid_argument("expected --run DIR GROUND_TRUTH");
-			files.insert(files.begin(), runDir + "/estimated_path.tum");
-			if (odometryFile.empty() && std::filesystem::exists(runDir + "/odometry_path.tum"))
-				odometryFile = runDir + "/odometry_path.tum";
-			if (figuresDir.empty()) figuresDir = runDir + "/figures";
-			if (mapFile.empty()) mapFile = runDir + "/final_map.txt";
-		}
-		if (files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
-		if (!scenePng.empty() && runDir.empty()) throw std::invalid_argument("--scene-png needs --run DIR");
-		if (windows.empty()) windows.push_back(RpeOptions());  // 1 s, as the TUM tools
-
-		if (!(from < to)) throw std::invalid_argument("--from must be before --to");
-		const Trajectory whole = readTrajectory(files[0]), truth = readTrajectory(files[1]);
-		const double t0 = whole.empty() ? 0 : whole.front().t;
-		const Trajectory estimate = timeWindow(whole, t0, from, to);
-		if (estimate.empty() && !whole.empty())
-			throw vslam::InputError("'" + files[0] + "': no pose between --from and --to");
-		const AteStats s = report("", estimate, truth, o, windows);
-		std::vector<std::pair<std::string, AteStats>> csv{{"estimate", s}};
-		std::optional<Trajectory> odometry;
-		if (!odometryFile.empty())
-		{
-			odometry = timeWindow(readTrajectory(odometryFile), t0, from, to);
-			AteOptions raw = o;
-			raw.align = false;  // odometry starts where the truth does
-			csv.push_back({"odometry", report("odometry_", *odometry, truth, raw, windows)});
-		}
-		if (!csvFile.empty()) writeErrorCsv(csvFile, csv);
-		if (!trueMapFile.empty())
-		{
-			if (mapFile.empty()) throw std::invalid_argument("--landmarks needs --map FILE (or --run)");
-			const LandmarkMap map = readLandmarkMap(mapFile, 0, 0), trueMap = readLandmarkMap(trueMapFile, 0, 0);
-			AteOptions align = o;
-			align.align = true;
-			printMapError("map", computeMapError(map, trueMap));
-			printMapError("map_se2_aligned", computeMapError(map, trueMap, computeAte(estimate, truth, align).alignment));
-		}
-
-		std::optional<world::FloorPlan> plan;
-		if (!worldFile.empty()) plan = world::loadFloorPlan(worldFile, "/usr/share");
-		RunFigureSources src;
-		src.estimate = &estimate;
-		src.truth = &truth;
-		src.odometry = odometry ? &*odometry : nullptr;
-		src.plan = plan ? &*plan : nullptr;
-		src.runDir = runDir;
-		src.alignment = s.alignment;
-		src.maxGap = o.maxGap;
-		if (!plotFile.empty()) writePathsFigure(src, {}, plotFile);
-		if (!figuresDir.empty())
-			for (const auto& f : writeRunFigures(src, figuresDir)) std::printf("figure: %s\n", f.c_str());
-		if (!scenePng.empty()) writeScenePicture(runDir + "/final_map.3Dscene", scenePng);
+		evaluate(c);
 		return 0;
 	}
 	catch (const std::invalid_argument& e)
