@@ -76,6 +76,83 @@ void checkSorted(const std::vector<std::vector<double>>& rows, const std::string
 		if (rows[i][0] < rows[i - 1][0])
 			throw InputError("'" + file + "': times go backwards at data row " + std::to_string(i + 1));
 }
+using Detections = std::map<double, std::vector<mrpt::obs::CObservationBearingRange::TMeasurement>>;
+
+/** The landmark detections by image time, within the odometry's span;
+ * robots seen, false barcodes and detections outside the span counted. */
+Detections landmarkDetections(const std::vector<std::vector<double>>& measRows, const std::string& measFile,
+	const std::map<int, int>& subjectOfBarcode, double tOdo, double tEnd, MrclamImport& out)
+{
+	Detections images;
+	for (size_t i = 0; i < measRows.size(); i++)
+	{
+		const auto& r = measRows[i];
+		const auto it = subjectOfBarcode.find(integerField(r[1], measFile, i));
+		if (it == subjectOfBarcode.end())
+		{
+			out.droppedFalseBarcodes++;
+			continue;
+		}
+		if (it->second <= 5)
+		{
+			out.droppedRobotSightings++;
+			continue;
+		}
+		if (r[0] < tOdo || r[0] > tEnd)
+		{
+			out.droppedOutsideOdometry++;
+			continue;
+		}
+		mrpt::obs::CObservationBearingRange::TMeasurement m;
+		m.range = static_cast<float>(r[2]);
+		m.yaw = static_cast<float>(r[3]);
+		m.pitch = 0;
+		m.landmarkID = it->second;
+		images[r[0]].push_back(m);
+		out.measurementsUsed++;
+	}
+	if (images.empty()) throw InputError("'" + measFile + "' has no landmark detection");
+	return images;
+}
+
+/** Step times from t0: every image, and fillers so that no two steps are
+ * more than maxGap apart, up to tEnd. */
+std::vector<double> stepTimes(const Detections& images, double t0, double tEnd, double maxGap)
+{
+	std::vector<double> times{t0};
+	double last = t0;
+	const auto fillTo = [&](double t) {
+		const int n = static_cast<int>(std::ceil((t - last) / maxGap - 1e-9));
+		for (int i = 1; i < n; i++) times.push_back(last + (t - last) * i / n);
+		times.push_back(t);
+		last = t;
+	};
+	for (const auto& [t, ms] : images)
+		if (t > t0) fillTo(t);
+	if (last < tEnd) fillTo(tEnd);
+	return times;
+}
+
+/** The odometry increment as MRPT stores it: the increment plus motion-model
+ * options from which MRPT recomputes the covariance when reading. Its
+ * Gaussian model with a1..a4 = 0 gives diag(minStdXY^2, minStdXY^2,
+ * minStdPHI^2), exactly our motion model's (with its floor; isotropic in
+ * xy, so frame-free). */
+mrpt::obs::CActionCollection::Ptr odometryAction(const CMotionModel& motion, const se2::Pose& inc, mrpt::Clock::time_point stamp)
+{
+	const Eigen::Matrix3d C = motion.incrementCovariance(inc) + motion.covarianceFloor();
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mm;
+	mm.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+	mm.gaussianModel.a1 = mm.gaussianModel.a2 = mm.gaussianModel.a3 = mm.gaussianModel.a4 = 0;
+	mm.gaussianModel.minStdXY = std::sqrt(C(0, 0));
+	mm.gaussianModel.minStdPHI = std::sqrt(C(2, 2));
+	mrpt::obs::CActionRobotMovement2D mv;
+	mv.computeFromOdometry(mrpt::poses::CPose2D(inc), mm);
+	mv.timestamp = stamp;
+	auto acts = mrpt::obs::CActionCollection::Create();
+	acts->insert(mv);
+	return acts;
+}
 }  // namespace
 
 MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
@@ -110,47 +187,16 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 	out.measurementRows = measRows.size();
 	OdometryIntegrator odometry(odoRows);
 	const double tOdo = odometry.startTime(), tEnd = odometry.endTime();
-	// Step times: every image inside the odometry span, plus gap fillers.
-	std::map<double, std::vector<mrpt::obs::CObservationBearingRange::TMeasurement>> images;
-	for (size_t i = 0; i < measRows.size(); i++)
-	{
-		const auto& r = measRows[i];
-		const auto it = subjectOfBarcode.find(integerField(r[1], measFile, i));
-		if (it == subjectOfBarcode.end())
-		{
-			out.droppedFalseBarcodes++;
-			continue;
-		}
-		if (it->second <= 5)
-		{
-			out.droppedRobotSightings++;
-			continue;
-		}
-		if (r[0] < tOdo || r[0] > tEnd)
-		{
-			out.droppedOutsideOdometry++;
-			continue;
-		}
-		mrpt::obs::CObservationBearingRange::TMeasurement m;
-		m.range = static_cast<float>(r[2]);
-		m.yaw = static_cast<float>(r[3]);
-		m.pitch = 0;
-		m.landmarkID = it->second;
-		images[r[0]].push_back(m);
-		out.measurementsUsed++;
-	}
-	if (images.empty()) throw InputError("'" + measFile + "' has no landmark detection");
+	const Detections images = landmarkDetections(measRows, measFile, subjectOfBarcode, tOdo, tEnd, out);
 	// Start: the first image with a landmark detection. Some robots turn
 	// before that; MRPT's kf-slam ignores odometry until its map holds a
 	// landmark, so starting earlier would hand it a wrong start heading.
 	const double t0 = images.begin()->first;
 	const auto start = interpolate(gtWorld, t0, 1.0);
 	if (!start)
-		throw InputError("'" + gtFile + "' has no ground truth at the first detection time " +
-			std::to_string(t0));
+		throw InputError("'" + gtFile + "' has no ground truth at the first detection time " + std::to_string(t0));
 	out.startPoseWorld = *start;
-	for (const auto& p : gtWorld)
-		out.groundTruth.push_back({p.t, se2::between(out.startPoseWorld, p.pose)});
+	for (const auto& p : gtWorld) out.groundTruth.push_back({p.t, se2::between(out.startPoseWorld, p.pose)});
 	const auto landmarkRows = readNumericTable(landmarksFile, "#", 5);
 	for (size_t i = 0; i < landmarkRows.size(); i++)
 	{
@@ -158,51 +204,21 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 		const se2::Pose l = se2::between(out.startPoseWorld, {r[1], r[2], 0});
 		out.landmarks.push_back({integerField(r[0], landmarksFile, i), l.x, l.y});
 	}
-
 	// Steps at least every max_step_gap: refuse absurd spans (corrupt times)
 	// instead of generating billions of steps.
 	constexpr double kMaxSteps = 1e7;
 	if ((tEnd - t0) / o.max_step_gap > kMaxSteps)
-		throw InputError("'" + odoFile + "': odometry spans " + std::to_string(tEnd - t0) +
-			" s, more than " + std::to_string(static_cast<long>(kMaxSteps)) +
-			" steps of max_step_gap; are its times corrupt?");
-
-	std::vector<double> times{t0};
-	double last = t0;
-	const auto fillTo = [&](double t) {
-		const int n = static_cast<int>(std::ceil((t - last) / o.max_step_gap - 1e-9));
-		for (int i = 1; i < n; i++) times.push_back(last + (t - last) * i / n);
-		times.push_back(t);
-		last = t;
-	};
-	for (const auto& [t, ms] : images)
-		if (t > t0) fillTo(t);
-	if (last < tEnd) fillTo(tEnd);
+		throw InputError("'" + odoFile + "': odometry spans " + std::to_string(tEnd - t0) + " s, more than " +
+			std::to_string(static_cast<long>(kMaxSteps)) + " steps of max_step_gap; are its times corrupt?");
 
 	const CMotionModel motion(o.motion);
 	se2::Pose prev = odometry.advanceTo(t0);
-	for (double t : times)
+	for (double t : stepTimes(images, t0, tEnd, o.max_step_gap))
 	{
 		const se2::Pose now = odometry.advanceTo(t);
 		const auto stamp = mrpt::Clock::fromDouble(t);
-		const se2::Pose inc = se2::between(prev, now);
-		// The increment's covariance from our motion model (with its floor).
-		// MRPT stores odometry actions as the increment plus motion-model
-		// options and recomputes the covariance when reading; its Gaussian
-		// model with a1..a4 = 0 gives diag(minStdXY^2, minStdXY^2,
-		// minStdPHI^2), exactly ours (isotropic in xy, so frame-free).
-		const Eigen::Matrix3d C = motion.incrementCovariance(inc) + motion.covarianceFloor();
-		mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mm;
-		mm.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
-		mm.gaussianModel.a1 = mm.gaussianModel.a2 = mm.gaussianModel.a3 = mm.gaussianModel.a4 = 0;
-		mm.gaussianModel.minStdXY = std::sqrt(C(0, 0));
-		mm.gaussianModel.minStdPHI = std::sqrt(C(2, 2));
-		mrpt::obs::CActionRobotMovement2D mv;
-		mv.computeFromOdometry(mrpt::poses::CPose2D(inc), mm);
-		mv.timestamp = stamp;
+		auto acts = odometryAction(motion, se2::between(prev, now), stamp);
 		prev = now;
-		auto acts = mrpt::obs::CActionCollection::Create();
-		acts->insert(mv);
 		// Every frame holds an observation, empty between images: MRPT's
 		// kf-slam requires one in every sensory frame.
 		auto obs = mrpt::obs::CObservationBearingRange::Create();
