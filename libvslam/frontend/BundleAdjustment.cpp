@@ -106,6 +106,105 @@ CameraPose perturbed(const CameraPose& pose, const Eigen::Matrix<double, 6, 1>& 
 	return {dR * pose.R, dR * pose.t + d.tail<3>()};
 }
 
+namespace
+{
+/** The Gauss-Newton system of a problem, cameras 1.. and points apart: A
+ * and gc for the free cameras, C and gp per point, B per observation
+ * (camera x point), each observation Huber-weighted; priors included. */
+struct NormalEquations
+{
+	Eigen::MatrixXd A;
+	Eigen::VectorXd gc;
+	std::vector<Eigen::Matrix3d> C;
+	std::vector<Eigen::Vector3d> gp;
+	std::vector<Eigen::Matrix<double, 6, 3>> B;
+};
+
+NormalEquations normalEquations(const Problem& p, const Options& opt)
+{
+	const int nc = static_cast<int>(p.poses.size()) - 1;
+	const int np = static_cast<int>(p.points.size());
+	NormalEquations eq{Eigen::MatrixXd::Zero(6 * nc, 6 * nc), Eigen::VectorXd::Zero(6 * nc),
+		std::vector<Eigen::Matrix3d>(np, Eigen::Matrix3d::Zero()), std::vector<Eigen::Vector3d>(np, Eigen::Vector3d::Zero()),
+		std::vector<Eigen::Matrix<double, 6, 3>>(p.observations.size())};
+	for (size_t k = 0; k < p.observations.size(); k++)
+	{
+		const auto& o = p.observations[k];
+		eq.B[k].setZero();
+		if (p.poses[o.camera].map(p.points[o.point]).z() <= 1e-9) continue;
+		Eigen::Matrix<double, 2, 6> Jc;
+		Eigen::Matrix<double, 2, 3> Jp;
+		jacobians(p, o, Jc, Jp);
+		const Eigen::Vector2d r = residual(p, o);
+		const double w = huberWeight(r.norm(), opt.huberPx);
+		eq.C[o.point] += w * Jp.transpose() * Jp;
+		eq.gp[o.point] += w * Jp.transpose() * r;
+		if (o.camera == 0) continue;
+		const int j = 6 * (o.camera - 1);
+		eq.A.block<6, 6>(j, j) += w * Jc.transpose() * Jc;
+		eq.gc.segment<6>(j) += w * Jc.transpose() * r;
+		eq.B[k] = w * Jc.transpose() * Jp;
+	}
+	for (const auto& prior : p.priors)
+	{
+		if (prior.camera < 1) continue;
+		const int j = 6 * (prior.camera - 1);
+		const Eigen::Matrix<double, 6, 6> J = priorJacobian(p, prior);
+		eq.A.block<6, 6>(j, j) += J.transpose() * J;
+		eq.gc.segment<6>(j) += J.transpose() * priorResidual(p, prior);
+	}
+	return eq;
+}
+
+/** The problem moved by the Levenberg-Marquardt step with damping
+ * \a lambda: the cameras solved on the Schur complement
+ * (S = A - B C^-1 B^T over pairs of observations of the same point), then
+ * each point from its own block. */
+Problem dampedStep(const Problem& p, const NormalEquations& eq, double lambda)
+{
+	const int nc = static_cast<int>(p.poses.size()) - 1;
+	const int np = static_cast<int>(p.points.size());
+	std::vector<Eigen::Matrix3d> Cinv(np);
+	for (int i = 0; i < np; i++)
+	{
+		Eigen::Matrix3d Ci = eq.C[i];
+		Ci.diagonal() *= 1 + lambda;
+		Ci.diagonal().array() += 1e-9;
+		Cinv[i] = Ci.inverse();
+	}
+	Eigen::MatrixXd S = eq.A;
+	S.diagonal() *= 1 + lambda;
+	S.diagonal().array() += 1e-9;
+	Eigen::VectorXd rhs = eq.gc;
+	std::vector<std::vector<size_t>> obsOfPoint(np);
+	for (size_t k = 0; k < p.observations.size(); k++)
+		if (p.observations[k].camera > 0) obsOfPoint[p.observations[k].point].push_back(k);
+	for (int i = 0; i < np; i++)
+		for (size_t a : obsOfPoint[i])
+		{
+			const int ja = 6 * (p.observations[a].camera - 1);
+			const Eigen::Matrix<double, 6, 3> BC = eq.B[a] * Cinv[i];
+			rhs.segment<6>(ja) -= BC * eq.gp[i];
+			for (size_t b : obsOfPoint[i])
+			{
+				const int jb = 6 * (p.observations[b].camera - 1);
+				S.block<6, 6>(ja, jb) -= BC * eq.B[b].transpose();
+			}
+		}
+	const Eigen::VectorXd dc = S.ldlt().solve(-rhs);
+	Problem trial = p;
+	for (int j = 0; j < nc; j++) trial.poses[j + 1] = perturbed(p.poses[j + 1], dc.segment<6>(6 * j));
+	std::vector<Eigen::Vector3d> bdc(np, Eigen::Vector3d::Zero());
+	for (size_t k = 0; k < p.observations.size(); k++)
+	{
+		const auto& o = p.observations[k];
+		if (o.camera > 0) bdc[o.point] += eq.B[k].transpose() * dc.segment<6>(6 * (o.camera - 1));
+	}
+	for (int i = 0; i < np; i++) trial.points[i] = p.points[i] - Cinv[i] * (eq.gp[i] + bdc[i]);
+	return trial;
+}
+}  // namespace
+
 double refine(Problem& p, const Options& opt)
 {
 	const int nc = static_cast<int>(p.poses.size()) - 1;  // free cameras
@@ -115,80 +214,10 @@ double refine(Problem& p, const Options& opt)
 	double cost = totalCost(p, opt.huberPx);
 	for (int it = 0; it < opt.iterations; it++)
 	{
-		Eigen::MatrixXd A = Eigen::MatrixXd::Zero(6 * nc, 6 * nc);
-		Eigen::VectorXd gc = Eigen::VectorXd::Zero(6 * nc);
-		std::vector<Eigen::Matrix3d> C(np, Eigen::Matrix3d::Zero());
-		std::vector<Eigen::Vector3d> gp(np, Eigen::Vector3d::Zero());
-		// B blocks: camera j x point i, stored per observation.
-		std::vector<Eigen::Matrix<double, 6, 3>> B(p.observations.size());
-		for (size_t k = 0; k < p.observations.size(); k++)
-		{
-			const auto& o = p.observations[k];
-			B[k].setZero();
-			if (p.poses[o.camera].map(p.points[o.point]).z() <= 1e-9) continue;
-			Eigen::Matrix<double, 2, 6> Jc;
-			Eigen::Matrix<double, 2, 3> Jp;
-			jacobians(p, o, Jc, Jp);
-			const Eigen::Vector2d r = residual(p, o);
-			const double w = huberWeight(r.norm(), opt.huberPx);
-			C[o.point] += w * Jp.transpose() * Jp;
-			gp[o.point] += w * Jp.transpose() * r;
-			if (o.camera == 0) continue;
-			const int j = 6 * (o.camera - 1);
-			A.block<6, 6>(j, j) += w * Jc.transpose() * Jc;
-			gc.segment<6>(j) += w * Jc.transpose() * r;
-			B[k] = w * Jc.transpose() * Jp;
-		}
-		for (const auto& prior : p.priors)
-		{
-			if (prior.camera < 1) continue;
-			const int j = 6 * (prior.camera - 1);
-			const Eigen::Matrix<double, 6, 6> J = priorJacobian(p, prior);
-			A.block<6, 6>(j, j) += J.transpose() * J;
-			gc.segment<6>(j) += J.transpose() * priorResidual(p, prior);
-		}
+		const NormalEquations eq = normalEquations(p, opt);
 		for (;;)  // LM: raise lambda until the step lowers the cost
 		{
-			std::vector<Eigen::Matrix3d> Cinv(np);
-			for (int i = 0; i < np; i++)
-			{
-				Eigen::Matrix3d Ci = C[i];
-				Ci.diagonal() *= 1 + lambda;
-				Ci.diagonal().array() += 1e-9;
-				Cinv[i] = Ci.inverse();
-			}
-			Eigen::MatrixXd S = A;
-			S.diagonal() *= 1 + lambda;
-			S.diagonal().array() += 1e-9;
-			Eigen::VectorXd rhs = gc;
-			// Schur complement: S -= B C^-1 B^T over pairs of observations
-			// of the same point; rhs -= B C^-1 gp.
-			std::vector<std::vector<size_t>> obsOfPoint(np);
-			for (size_t k = 0; k < p.observations.size(); k++)
-				if (p.observations[k].camera > 0) obsOfPoint[p.observations[k].point].push_back(k);
-			for (int i = 0; i < np; i++)
-				for (size_t a : obsOfPoint[i])
-				{
-					const int ja = 6 * (p.observations[a].camera - 1);
-					const Eigen::Matrix<double, 6, 3> BC = B[a] * Cinv[i];
-					rhs.segment<6>(ja) -= BC * gp[i];
-					for (size_t b : obsOfPoint[i])
-					{
-						const int jb = 6 * (p.observations[b].camera - 1);
-						S.block<6, 6>(ja, jb) -= BC * B[b].transpose();
-					}
-				}
-			const Eigen::VectorXd dc = S.ldlt().solve(-rhs);
-			Problem trial = p;
-			for (int j = 0; j < nc; j++)
-				trial.poses[j + 1] = perturbed(p.poses[j + 1], dc.segment<6>(6 * j));
-			std::vector<Eigen::Vector3d> bdc(np, Eigen::Vector3d::Zero());
-			for (size_t k = 0; k < p.observations.size(); k++)
-			{
-				const auto& o = p.observations[k];
-				if (o.camera > 0) bdc[o.point] += B[k].transpose() * dc.segment<6>(6 * (o.camera - 1));
-			}
-			for (int i = 0; i < np; i++) trial.points[i] = p.points[i] - Cinv[i] * (gp[i] + bdc[i]);
+			Problem trial = dampedStep(p, eq, lambda);
 			const double trialCost = totalCost(trial, opt.huberPx);
 			if (std::isfinite(trialCost) && trialCost < cost)
 			{
