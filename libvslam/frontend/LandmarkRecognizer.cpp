@@ -231,6 +231,33 @@ PoseConsensus extendByProjection(const ImageFeatures& image, const cv::Mat& quer
 	cv::solvePnPRefineLM(subset(c.object, refineOn), subset(c.pixels, refineOn), K, cv::noArray(), rvec, tvec);
 	return consensusOf(c.object, c.pixels, K, rvec, tvec, o.recognition_ransac_px);
 }
+/** How the measurement moves with the PnP pose, by central differences. */
+struct MeasurementJacobians
+{
+	Eigen::Matrix<double, 3, 6> F;  //!< d(dx, dy, dtheta) / d(rvec, tvec)
+	Eigen::Matrix<double, 2, 6> G;  //!< d tilt / d(rvec, tvec)
+};
+
+MeasurementJacobians measurementJacobians(const cv::Mat& rvec, const cv::Mat& tvec, const mrpt::poses::CPose3D& mount)
+{
+	MeasurementJacobians J;
+	for (int k = 0; k < 6; k++)
+	{
+		constexpr double h = 1e-6;
+		cv::Mat rp = rvec.clone(), tp = tvec.clone(), rm = rvec.clone(), tm = tvec.clone();
+		(k < 3 ? rp : tp).at<double>(k % 3) += h;
+		(k < 3 ? rm : tm).at<double>(k % 3) -= h;
+		const VisualMeasurement plus = measurementFromPnP(rp, tp, mount);
+		const VisualMeasurement minus = measurementFromPnP(rm, tm, mount);
+		const auto& a = plus.landmarkInRobot;
+		const auto& b = minus.landmarkInRobot;
+		J.F(0, k) = (a.x() - b.x()) / (2 * h);
+		J.F(1, k) = (a.y() - b.y()) / (2 * h);
+		J.F(2, k) = mrpt::math::wrapToPi(a.phi() - b.phi()) / (2 * h);
+		J.G.col(k) = (plus.tilt - minus.tilt) / (2 * h);
+	}
+	return J;
+}
 }  // namespace
 
 std::optional<VisualMeasurement> vslam::recognizeLandmark(
@@ -299,31 +326,14 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 		conditioned = poseCovariance(
 			poseSolveResiduals(inlierObject, std::vector<float>(), creationCamera, rvec, tvec, image.camera.K()),
 			std::max(kLeastPixelNoisePx, m.ProjErrRMS), poseCov);
-	Eigen::Matrix<double, 3, 6> F;  // d(dx, dy, dtheta) / d(rvec, tvec)
-	Eigen::Matrix<double, 2, 6> G;  // d tilt / d(rvec, tvec)
-	for (int k = 0; conditioned && k < 6; k++)
-	{
-		constexpr double h = 1e-6;
-		cv::Mat rp = rvec.clone(), tp = tvec.clone(), rm = rvec.clone(), tm = tvec.clone();
-		(k < 3 ? rp : tp).at<double>(k % 3) += h;
-		(k < 3 ? rm : tm).at<double>(k % 3) -= h;
-		const VisualMeasurement plus = measurementFromPnP(rp, tp, mount);
-		const VisualMeasurement minus = measurementFromPnP(rm, tm, mount);
-		const auto& a = plus.landmarkInRobot;
-		const auto& b = minus.landmarkInRobot;
-		F(0, k) = (a.x() - b.x()) / (2 * h);
-		F(1, k) = (a.y() - b.y()) / (2 * h);
-		F(2, k) = mrpt::math::wrapToPi(a.phi() - b.phi()) / (2 * h);
-		G.col(k) = (plus.tilt - minus.tilt) / (2 * h);
-	}
-	m.stdSlope = conditioned ? slopeStd(m.tilt, G * poseCov * G.transpose())
-							 : std::numeric_limits<double>::infinity();
 	if (!conditioned)
 	{
-		m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
+		m.stdSlope = m.stdPosition = m.stdHeading = std::numeric_limits<double>::infinity();
 		m.covariance.setConstant(std::numeric_limits<double>::infinity());
 		return m;
 	}
-	setPredictedCovariance(m, F * poseCov * F.transpose());
+	const MeasurementJacobians J = measurementJacobians(rvec, tvec, mount);
+	m.stdSlope = slopeStd(m.tilt, J.G * poseCov * J.G.transpose());
+	setPredictedCovariance(m, J.F * poseCov * J.F.transpose());
 	return m;
 }
