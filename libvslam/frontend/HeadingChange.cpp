@@ -239,6 +239,58 @@ double PlanarEpipolarModel::residual(const EpipolarMotion& m, const Eigen::Vecto
 	return a / sqrtB;
 }
 
+namespace
+{
+/** The median of the votes in the densest window of three vote bins (the
+ * start of the fit), if that window holds at least \a least votes. */
+std::optional<double> votedHeadingChange(const std::vector<double>& votes, double maxTurn, size_t least)
+{
+	const int half = static_cast<int>(std::ceil(maxTurn / kVoteBin));
+	std::vector<int> bins(static_cast<size_t>(2 * half + 1), 0);
+	for (const double v : votes)
+		if (std::abs(v) <= maxTurn) bins[static_cast<size_t>(std::lround(v / kVoteBin) + half)]++;
+	int best = 0, bestCount = -1;
+	for (int i = 0; i < static_cast<int>(bins.size()); i++)
+	{
+		int count = bins[static_cast<size_t>(i)];
+		if (i > 0) count += bins[static_cast<size_t>(i - 1)];
+		if (i + 1 < static_cast<int>(bins.size())) count += bins[static_cast<size_t>(i + 1)];
+		if (count > bestCount) bestCount = count, best = i;
+	}
+	if (bestCount < static_cast<int>(least)) return std::nullopt;
+	std::vector<double> window;
+	for (const double v : votes)
+		if (std::abs(v - (best - half) * kVoteBin) <= 1.5 * kVoteBin) window.push_back(v);
+	std::nth_element(window.begin(), window.begin() + static_cast<long>(window.size() / 2), window.end());
+	return window[window.size() / 2];
+}
+
+/** The heading change within three vote bins of \a theta, in steps of
+ * kSearchStep, with the least truncated squared epipolar distance (each
+ * ray pair's at most \a tau) on the arc. */
+double leastTruncatedCostNear(const PlanarEpipolarModel& model, const std::vector<Eigen::Vector3d>& rays1,
+	const std::vector<Eigen::Vector3d>& rays2, double theta, double tau)
+{
+	auto truncatedCost = [&](double th) {
+		const EpipolarMotion m = model.motion(th, th / 2);
+		double c = 0;
+		for (size_t i = 0; i < rays1.size(); i++)
+		{
+			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i]);
+			c += std::min(r * r, tau * tau);
+		}
+		return c;
+	};
+	double bestTheta = theta, bestCost = truncatedCost(theta);
+	for (double d = -3 * kVoteBin; d <= 3 * kVoteBin + 1e-12; d += kSearchStep)
+	{
+		const double c = truncatedCost(theta + d);
+		if (c < bestCost) bestCost = c, bestTheta = theta + d;
+	}
+	return bestTheta;
+}
+}  // namespace
+
 std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFeatures& first,
 	const ImageFeatures& second, const mrpt::poses::CPose3D& mount, double chord, const HeadingChangeSettings& s)
 {
@@ -267,47 +319,11 @@ std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFea
 		votes.push_back(se2::wrap(std::atan2(v1.y(), v1.x()) - std::atan2(v2.y(), v2.x())));
 	}
 
-	// The densest window of three vote bins gives the start.
-	const int half = static_cast<int>(std::ceil(s.maxTurn / kVoteBin));
-	std::vector<int> bins(static_cast<size_t>(2 * half + 1), 0);
-	for (const double v : votes)
-		if (std::abs(v) <= s.maxTurn) bins[static_cast<size_t>(std::lround(v / kVoteBin) + half)]++;
-	int best = 0, bestCount = -1;
-	for (int i = 0; i < static_cast<int>(bins.size()); i++)
-	{
-		int count = bins[static_cast<size_t>(i)];
-		if (i > 0) count += bins[static_cast<size_t>(i - 1)];
-		if (i + 1 < static_cast<int>(bins.size())) count += bins[static_cast<size_t>(i + 1)];
-		if (count > bestCount) bestCount = count, best = i;
-	}
-	if (bestCount < static_cast<int>(least)) return std::nullopt;
-	std::vector<double> window;
-	for (const double v : votes)
-		if (std::abs(v - (best - half) * kVoteBin) <= 1.5 * kVoteBin) window.push_back(v);
-	std::nth_element(window.begin(), window.begin() + static_cast<long>(window.size() / 2), window.end());
-	double theta = window[window.size() / 2];
-
-	// A fine search of the truncated squared distance around it, on the arc:
-	// the votes ignore parallax, the model does not.
+	const auto voted = votedHeadingChange(votes, s.maxTurn, least);
+	if (!voted) return std::nullopt;
+	// The votes ignore parallax, the model does not.
 	const double tau = s.inlierPx / focal;
-	auto truncatedCost = [&](double th) {
-		const EpipolarMotion m = model.motion(th, th / 2);
-		double c = 0;
-		for (size_t i = 0; i < rays1.size(); i++)
-		{
-			const double r = PlanarEpipolarModel::residual(m, rays1[i], rays2[i]);
-			c += std::min(r * r, tau * tau);
-		}
-		return c;
-	};
-	double bestTheta = theta, bestCost = truncatedCost(theta);
-	for (double d = -3 * kVoteBin; d <= 3 * kVoteBin + 1e-12; d += kSearchStep)
-	{
-		const double c = truncatedCost(theta + d);
-		if (c < bestCost) bestCost = c, bestTheta = theta + d;
-	}
-	theta = bestTheta;
-
+	double theta = leastTruncatedCostNear(model, rays1, rays2, *voted, tau);
 	const auto fit = fitOnArc(model, rays1, rays2, theta, tau, least);
 	if (!fit) return std::nullopt;
 	theta = fit->theta;
