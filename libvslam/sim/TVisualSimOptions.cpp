@@ -97,6 +97,20 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	odometry.slip_probability = readDouble(c, s, "slip_probability", odometry.slip_probability, Range::closed(0, 1));
 	odometry.slip_std = readDouble(c, s, "slip_std", odometry.slip_std, Range::closed(0, 10));
 
+	loadCamera(c, s);
+
+	laser_rays = static_cast<int>(readInt(c, s, "laser_rays", laser_rays, Range::closed(2, 10000)));
+	laser_fov = readDegreesAsRadians(c, s, "laser_fov_deg", laser_fov, {0, 360, false, true});
+	laser_max_range = readDouble(c, s, "laser_max_range", laser_max_range, {0, 1000, false, true});
+	laser_std = readDouble(c, s, "laser_std", laser_std, Range::closed(0, 10));
+	laser_pose = readNumberList(c, s, "laser_pose", laser_pose);
+	if (laser_pose.size() != 3) throw ConfigError("[" + s + "] laser_pose: expected 'x y z'");
+
+	loadEvents(c, s);
+}
+
+void TVisualSimOptions::loadCamera(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
 	camera_rate = readDouble(c, s, "camera_rate", camera_rate, {0, 100, false, true});
 	const double stepsPerFrame = 1.0 / (camera_rate * dt);
 	if (stepsPerFrame < 1 - 1e-6 || std::abs(stepsPerFrame - std::round(stepsPerFrame)) > 1e-6)
@@ -131,14 +145,10 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	camera_jitter_deg = readDouble(c, s, "camera_jitter_deg", camera_jitter_deg, Range::closed(0, 10));
 	image_format = readWord(c, s, "image_format", image_format, {"png", "jpg"});
 	jpeg_quality = static_cast<int>(readInt(c, s, "jpeg_quality", jpeg_quality, Range::closed(1, 100)));
+}
 
-	laser_rays = static_cast<int>(readInt(c, s, "laser_rays", laser_rays, Range::closed(2, 10000)));
-	laser_fov = readDegreesAsRadians(c, s, "laser_fov_deg", laser_fov, {0, 360, false, true});
-	laser_max_range = readDouble(c, s, "laser_max_range", laser_max_range, {0, 1000, false, true});
-	laser_std = readDouble(c, s, "laser_std", laser_std, Range::closed(0, 10));
-	laser_pose = readNumberList(c, s, "laser_pose", laser_pose);
-	if (laser_pose.size() != 3) throw ConfigError("[" + s + "] laser_pose: expected 'x y z'");
-
+void TVisualSimOptions::loadEvents(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
 	kidnap_times = readNumberList(c, s, "kidnap_times", kidnap_times);
 	checkTimes(s, "kidnap_times", kidnap_times, 1, duration);
 	kidnap_min_distance = readDouble(c, s, "kidnap_min_distance", kidnap_min_distance, Range::closed(0, 1000));

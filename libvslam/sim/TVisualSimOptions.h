@@ -111,6 +111,12 @@ struct TVisualSimOptions : public mrpt::config::CLoadableOptions
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
 	void saveToConfigFile(mrpt::config::CConfigFileBase& cfg, const std::string& section) const override;
+
+   private:
+	/** The camera keys: intrinsics, mount, imaging. */
+	void loadCamera(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	/** The events: kidnaps, light changes, dark spells, blackouts, people. */
+	void loadEvents(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
 /** Options from INI text with --set overrides: unknown keys in

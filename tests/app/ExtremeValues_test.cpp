@@ -137,7 +137,10 @@ TEST(ExtremeValues, EveryNumericKeyAtAndBeyondItsLimitsEndsAsDocumented)
 					stoppedNonFinite++;  // documented: the run stops naming the step and the keys
 				else
 					EXPECT_EQ(code, CVSlamApp::kOk) << what << "\n" << messages;
-				if (fs::exists(out)) EXPECT_EQ(nonFiniteOutput(out), "") << what;
+				if (fs::exists(out))
+				{
+					EXPECT_EQ(nonFiniteOutput(out), "") << what;
+				}
 				fs::remove_all(out);
 			}
 	}

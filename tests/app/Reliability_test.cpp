@@ -234,7 +234,7 @@ TEST(Reliability, AMissingGroundTruthFileNamesItsKey)
 // --------------------------------------------------------------------------
 TEST(Reliability, AbsurdNoiseSettingsAreConfigurationErrorsNamingTheKey)
 {
-	for (const std::string& set : {"vslam_motion_model.sigma_T=1e200", "vslam_visual.std_dx=1e200",
+	for (const std::string set : {"vslam_motion_model.sigma_T=1e200", "vslam_visual.std_dx=1e200",
 			 "vslam_range_bearing.std_range=1e6", "vslam_particle_filter.initial_std_xy=nan"})
 	{
 		TempDir dir;
