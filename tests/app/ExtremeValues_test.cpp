@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/config/StrictRead.h>
+#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/io/RawlogWriting.h>
 #include <libvslam/obs/registerClasses.h>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
@@ -82,6 +84,19 @@ int runVslam(const std::vector<std::string>& args, std::string& messages)
 	return code;
 }
 
+/** The first \a steps steps of \a rawlog, written to \a file: each case
+ * runs 20 steps, and the reader's whole-file check then reads no more. */
+std::string headOf(const std::string& rawlog, size_t steps, const std::string& file)
+{
+	vslam::CRawlogReader reader(rawlog);
+	std::vector<vslam::ActionFramePair> head;
+	vslam::RawlogStep step;
+	while (head.size() < steps && reader.next(step))
+		head.emplace_back(step.action ? step.action : mrpt::obs::CActionCollection::Create(), step.sf);
+	vslam::writeActionFrameRawlog(file, head);
+	return file;
+}
+
 /** A NaN or infinity written anywhere in the output folder. */
 std::string nonFiniteOutput(const std::string& dir)
 {
@@ -99,9 +114,10 @@ TEST(ExtremeValues, EveryNumericKeyAtAndBeyondItsLimitsEndsAsDocumented)
 	ASSERT_GT(keys.size(), 60u);
 	TempDir dir;
 	size_t cases = 0, rejected = 0, ran = 0, stoppedNonFinite = 0;
-	for (const auto& rawlog : rawlogs)
+	for (const auto& whole : rawlogs)
 	{
-		if (!fs::exists(rawlog)) continue;
+		if (!fs::exists(whole)) continue;
+		const std::string rawlog = headOf(whole, 25, dir.file(fs::path(whole).filename().string()));
 		for (const auto& k : keys)
 			for (const auto& c : casesFor(k))
 			{
