@@ -50,6 +50,32 @@ double errorBefore(const AteStats& ate, double t)
 	return before.empty() ? NAN : median(before);
 }
 
+/** Kidnaps: the ground truth jumps while the run lasts. Recovered within
+ * 10 s: the error comes within 0.3 m and stays for 5 s; and, since a SLAM
+ * map is itself off by the run's error level, also to that level: within
+ * twice the median error of the minute before the kidnap (at least 0.3 m). */
+void scoreKidnaps(const AteStats& ate, const Trajectory& truth, Metrics& m)
+{
+	double kidnaps = 0, recovered = 0, worst = 0, recoveredToLevel = 0, worstToLevel = 0;
+	for (const size_t i : truthJumps(truth))
+	{
+		if (truth[i].t > ate.times.back()) continue;
+		kidnaps++;
+		const auto t = recoveryTime(ate.times, ate.errors, truth[i].t);
+		if (t && *t <= 10) recovered++;
+		worst = std::max(worst, t ? *t : INFINITY);
+		RecoveryCriterion level;
+		level.within = std::max(0.3, 2 * errorBefore(ate, truth[i].t));
+		const auto tl = recoveryTime(ate.times, ate.errors, truth[i].t, level);
+		if (tl && *tl <= 10) recoveredToLevel++;
+		worstToLevel = std::max(worstToLevel, tl ? *tl : INFINITY);
+	}
+	m["kidnaps"] = kidnaps;
+	m["kidnaps_recovered_10s"] = recovered;
+	m["kidnaps_recovered_10s_to_prior_level"] = recoveredToLevel;
+	if (kidnaps > 0) m["recovery_s_worst"] = worst, m["recovery_s_worst_to_prior_level"] = worstToLevel;
+}
+
 Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, double peakMiB)
 {
 	const Scenario& s = plan.scenarios[task.scenario];
@@ -92,29 +118,7 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	m["odometry_ate_median"] = odo.median;
 	m["odometry_ate_mean"] = odo.mean;
 	m["odometry_rpe_1s_rmse"] = computeRpe(odometry, truth).translation.rmse;
-	// Kidnaps: the ground truth jumps while the run lasts. Recovered within
-	// 10 s: the error comes within 0.3 m and stays for
-	// 5 s; and, since a SLAM map is itself off by the run's error level, also
-	// to that level: within twice the median error of the minute before the
-	// kidnap (at least 0.3 m).
-	double kidnaps = 0, recovered = 0, worst = 0, recoveredToLevel = 0, worstToLevel = 0;
-	for (const size_t i : truthJumps(truth))
-	{
-		if (truth[i].t > ate.times.back()) continue;
-		kidnaps++;
-		const auto t = recoveryTime(ate.times, ate.errors, truth[i].t);
-		if (t && *t <= 10) recovered++;
-		worst = std::max(worst, t ? *t : INFINITY);
-		RecoveryCriterion level;
-		level.within = std::max(0.3, 2 * errorBefore(ate, truth[i].t));
-		const auto tl = recoveryTime(ate.times, ate.errors, truth[i].t, level);
-		if (tl && *tl <= 10) recoveredToLevel++;
-		worstToLevel = std::max(worstToLevel, tl ? *tl : INFINITY);
-	}
-	m["kidnaps"] = kidnaps;
-	m["kidnaps_recovered_10s"] = recovered;
-	m["kidnaps_recovered_10s_to_prior_level"] = recoveredToLevel;
-	if (kidnaps > 0) m["recovery_s_worst"] = worst, m["recovery_s_worst_to_prior_level"] = worstToLevel;
+	scoreKidnaps(ate, truth, m);
 	const auto summary = readRunSummary(out + "/run_summary.yaml");
 	m["kidnaps_declared"] = summaryNumber(summary, "filter.kidnaps_detected");
 	m["kidnaps_reverted"] = summaryNumber(summary, "filter.kidnaps_reverted");
