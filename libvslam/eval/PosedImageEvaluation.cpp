@@ -74,18 +74,13 @@ se2::Pose vslam::robotPoseOfCamera(const StrechaView& v)
 	return {v.C.x(), -v.C.y(), std::atan2(axis.y(), axis.x())};
 }
 
-PosedImageEvaluation vslam::evaluatePosedImages(
-	const std::vector<StrechaView>& views, const TVisualFrontEndOptions& fe,
-	const PosedImageEvaluationOptions& o)
+namespace
 {
-	PosedImageEvaluation out;
-	const int n = static_cast<int>(views.size());
-	const mrpt::poses::CPose3D mount = calibratedMount(views);
-	out.mount = mount;
+/** Every view's features, their codes in the database's matching space. */
+std::vector<ImageFeatures> featuresOfViews(
+	const std::vector<StrechaView>& views, const TVisualFrontEndOptions& fe, const DescriptorCodec& codec)
+{
 	const FeatureExtractor extractor(fe);
-	const DescriptorCodec codec(DescriptorCodec::parse(fe.descriptor_storage), fe.descriptor_dims);
-
-	auto t0 = std::chrono::steady_clock::now();
 	std::vector<ImageFeatures> features;
 	for (const auto& v : views)
 	{
@@ -103,8 +98,60 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 		features.push_back(extractor.extract(image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), calib));
 		features.back().codes = codec.toMatchingSpace(features.back().descriptors);
 	}
-	out.featureSeconds = seconds(t0);
+	return features;
+}
 
+/** The k views from \a first as landmark creation sees them, their poses
+ * from odometry: the true increments plus noise (one generator and one
+ * distribution for the whole evaluation: the distribution keeps a drawn
+ * value between calls). */
+std::vector<CreationView> creationViews(const std::vector<ImageFeatures>& features, const std::vector<se2::Pose>& robot,
+	int first, int k, const mrpt::poses::CPose3D& mount, const PosedImageEvaluationOptions& o, std::mt19937& rng,
+	std::normal_distribution<double>& gauss)
+{
+	std::vector<CreationView> creation(k);
+	se2::Pose odo = robot[first];
+	for (int j = 0; j < k; j++)
+	{
+		if (j > 0)
+		{
+			const se2::Pose inc = se2::between(robot[first + j - 1], robot[first + j]);
+			const double len = std::hypot(inc.x, inc.y);
+			const se2::Pose noisy{inc.x + gauss(rng) * o.odometryTranslationNoise * len,
+				inc.y + gauss(rng) * o.odometryTranslationNoise * len, inc.phi + gauss(rng) * o.odometryHeadingNoiseDeg * kDeg};
+			odo = se2::compose(odo, noisy);
+		}
+		creation[j].features = features[first + j];
+		creation[j].cameraPose = mrpt::poses::CPose3D(odo.x, odo.y, 0, odo.phi, 0, 0) + mount;
+		creation[j].time = first + j;
+	}
+	return creation;
+}
+
+/** Creation accuracy: the oldest view's refined pose against the truth. */
+void recordCreationAccuracy(const StrechaView& a, const StrechaView& b, const CreationResult& created, PosedImageEvaluation& out)
+{
+	const Eigen::Matrix3d Rtrue = a.R.transpose() * b.R;  // X_a = R X_b + t
+	const Eigen::Vector3d ttrue = a.R.transpose() * (b.C - a.C);
+	const auto& [R, t] = created.refinedPoses.front();
+	out.creationRotationErrorDeg.push_back(Eigen::AngleAxisd(R * Rtrue.transpose()).angle() / kDeg);
+	out.creationDirectionErrorDeg.push_back(std::acos(std::clamp(t.normalized().dot(ttrue.normalized()), -1.0, 1.0)) / kDeg);
+	out.creationScaleError.push_back(t.norm() / ttrue.norm() - 1);
+}
+}  // namespace
+
+PosedImageEvaluation vslam::evaluatePosedImages(
+	const std::vector<StrechaView>& views, const TVisualFrontEndOptions& fe,
+	const PosedImageEvaluationOptions& o)
+{
+	PosedImageEvaluation out;
+	const int n = static_cast<int>(views.size());
+	const mrpt::poses::CPose3D mount = calibratedMount(views);
+	out.mount = mount;
+	const DescriptorCodec codec(DescriptorCodec::parse(fe.descriptor_storage), fe.descriptor_dims);
+	auto t0 = std::chrono::steady_clock::now();
+	const std::vector<ImageFeatures> features = featuresOfViews(views, fe, codec);
+	out.featureSeconds = seconds(t0);
 	std::vector<se2::Pose> robot;
 	for (const auto& v : views) robot.push_back(robotPoseOfCamera(v));
 
@@ -113,24 +160,7 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 	const int k = fe.creation_views;
 	for (int first = 0; first + k <= n; first++)
 	{
-		// Odometry along the creation views: true increments plus noise.
-		std::vector<CreationView> creation(k);
-		se2::Pose odo = robot[first];
-		for (int j = 0; j < k; j++)
-		{
-			if (j > 0)
-			{
-				const se2::Pose inc = se2::between(robot[first + j - 1], robot[first + j]);
-				const double len = std::hypot(inc.x, inc.y);
-				const se2::Pose noisy{inc.x + gauss(rng) * o.odometryTranslationNoise * len,
-					inc.y + gauss(rng) * o.odometryTranslationNoise * len,
-					inc.phi + gauss(rng) * o.odometryHeadingNoiseDeg * kDeg};
-				odo = se2::compose(odo, noisy);
-			}
-			creation[j].features = features[first + j];
-			creation[j].cameraPose = mrpt::poses::CPose3D(odo.x, odo.y, 0, odo.phi, 0, 0) + mount;
-			creation[j].time = first + j;
-		}
+		const std::vector<CreationView> creation = creationViews(features, robot, first, k, mount, o, rng, gauss);
 		std::vector<const CreationView*> ptrs;
 		for (const auto& c : creation) ptrs.push_back(&c);
 		t0 = std::chrono::steady_clock::now();
@@ -140,18 +170,7 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 		if (!created.landmark) continue;
 		out.landmarksCreated++;
 		const int frameView = first + k - 1;
-		{
-			// Creation accuracy: the oldest view's refined pose against the truth.
-			const StrechaView& a = views[first];
-			const StrechaView& b = views[frameView];
-			const Eigen::Matrix3d Rtrue = a.R.transpose() * b.R;  // X_a = R X_b + t
-			const Eigen::Vector3d ttrue = a.R.transpose() * (b.C - a.C);
-			const auto& [R, t] = created.refinedPoses.front();
-			out.creationRotationErrorDeg.push_back(Eigen::AngleAxisd(R * Rtrue.transpose()).angle() / kDeg);
-			out.creationDirectionErrorDeg.push_back(
-				std::acos(std::clamp(t.normalized().dot(ttrue.normalized()), -1.0, 1.0)) / kDeg);
-			out.creationScaleError.push_back(t.norm() / ttrue.norm() - 1);
-		}
+		recordCreationAccuracy(views[first], views[frameView], created, out);
 		created.landmark->id = frameView;
 		created.landmark->descriptors = codec.encode(created.landmark->descriptors);  // as the database stores it
 		out.landmarkBytes.push_back(static_cast<double>(created.landmark->bytes()));
