@@ -5,7 +5,7 @@
  *   [batch]
  *   output_dir = ../../batch_out/paper   ; paths relative to this file
  *   seeds = 1-20                         ; or a list: 1 2 3
- *   jobs = 0                             ; runs at a time; 0: one per core
+ *   jobs = 0                             ; runs at a time; 0: one per CPU it may use
  *   vslam_ini = ../demo_rendered.ini     ; vslam's configuration
  *   set = vslam_particle_filter.sampleSize=200 ; ... for every run
  *   rbpf_slam_ini = ../peers/rbpf-slam_gridmapping.ini ; optional: MRPT's
