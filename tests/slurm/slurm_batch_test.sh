@@ -62,10 +62,17 @@ wait_for_jobs() {
 }
 
 # The state of each job and array element (sacct -X): "JOBID NAME STATE".
+# slurmctld hands finished jobs to the accounting daemon on its own time:
+# asked again (up to 30 s) until the summary job's end is recorded.
 job_states() {
-  local ids
+  local ids states
   ids=$(awk '{print $2}' "$1/jobs.txt" | paste -sd,)
-  sacct -X -n -P -j "$ids" --format=JobID,JobName,State | tr '|' ' '
+  for ((i = 0; i < 30; i++)); do
+    states=$(sacct -X -n -P -j "$ids" --format=JobID,JobName,State | tr '|' ' ')
+    grep -Eq 'vslam-summary (COMPLETED|FAILED|CANCELLED)' <<< "$states" && break
+    sleep 1
+  done
+  echo "$states"
 }
 
 # summary.csv without the columns a machine's speed changes.
