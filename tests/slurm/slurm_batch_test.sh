@@ -62,14 +62,14 @@ wait_for_jobs() {
 }
 
 # The state of each job and array element (sacct -X): "JOBID NAME STATE".
-# slurmctld hands finished jobs to the accounting daemon on its own time:
-# asked again (up to 30 s) until the summary job's end is recorded.
+# slurmctld hands finished jobs to the accounting daemon on its own time and
+# in no set order: asked again (up to 30 s) until all $2 records are there.
 job_states() {
   local ids states
   ids=$(awk '{print $2}' "$1/jobs.txt" | paste -sd,)
   for ((i = 0; i < 30; i++)); do
     states=$(sacct -X -n -P -j "$ids" --format=JobID,JobName,State | tr '|' ' ')
-    grep -Eq 'vslam-summary (COMPLETED|FAILED|CANCELLED)' <<< "$states" && break
+    [[ $(grep -c . <<< "$states") -ge $2 ]] && break
     sleep 1
   done
   echo "$states"
@@ -91,7 +91,7 @@ echo "== the batch as Slurm job arrays"
 wait_for_jobs sub
 echo "== sacct"
 sacct -j "$(awk '{print $2}' sub/jobs.txt | paste -sd,)" --format=JobID%14,JobName%22,State,ExitCode,AllocCPUS,ReqMem,Elapsed
-states="$(job_states sub)"
+states="$(job_states sub 11)"  # 10 tasks and the summary
 [[ $(grep -c ' COMPLETED$' <<< "$states") -eq 11 ]] || fail "not 10 tasks and the summary COMPLETED: $states"
 grep -q "1 CPUs:" sub/logs/rendered-run_*_0.out || fail "a task did not see SLURM_CPUS_PER_TASK=1"
 [[ -s cluster_out/summary.csv ]] || fail "the summary job wrote no summary.csv"
@@ -108,7 +108,7 @@ echo "== a failed rendering cancels its runs, not the other scenario's"
 write_batch bad.ini "; vslam_simul.world_file=$T/no_such.world"
 "$BIN/vslam-batch" bad.ini --set "batch.output_dir=$T/bad_out" --slurm bad_sub --submit
 wait_for_jobs bad_sub
-states="$(job_states bad_sub)"
+states="$(job_states bad_sub 9)"  # 2 renderings, 4 runs, 2 cancelled arrays, the summary
 echo "$states"
 [[ $(grep -c 'vslam-rendered-render FAILED$' <<< "$states") -eq 2 ]] || fail "the renderings did not fail"
 grep 'vslam-rendered-run' <<< "$states" | grep -qv 'CANCELLED$' && fail "a run of the failed rendering was not cancelled"
