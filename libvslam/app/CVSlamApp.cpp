@@ -1,4 +1,5 @@
 #include <libvslam/app/CVSlamApp.h>
+#include <libvslam/app/KeyframesAlongOdometry.h>
 #include <libvslam/app/InterruptFlag.h>
 #include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/config/ConfigError.h>
@@ -646,7 +647,9 @@ void CVSlamApp::writeFinalOutputs(
 	{
 		CLandmarkPoseGraph solved = *graph;
 		solved.optimize();
-		for (const auto& [t, pose] : solved.keyframePath()) poseGraphPath.push_back({toSeconds(t), pose});
+		Trajectory keyframes;
+		for (const auto& [t, pose] : solved.keyframePath()) keyframes.push_back({toSeconds(t), pose});
+		poseGraphPath = keyframesAlongOdometry(keyframes, r.odometry);
 		writeTumTrajectory(folder.file("pose_graph_path.tum"), poseGraphPath, summary.runId);
 		std::ostringstream text;  // for graph-slam --view -i
 		solved.toMrptGraph().writeAsText(text);

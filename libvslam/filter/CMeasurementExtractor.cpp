@@ -49,7 +49,7 @@ void CMeasurementExtractor::TRangeBearingOptions::saveToConfigFile(
 		"Range noise [m]; 0: each observation's sensor_std_range");
 	c.write(s, "std_bearing_deg", std_bearing * 180 / M_PI, 25, 12,
 		"Bearing noise [deg]; 0: each observation's sensor_std_yaw");
-	c.write(s, "min_range", min_range, 25, 12, "Ignore ranges below this [m]");
+	c.write(s, "min_range", min_range, 25, 12, "Ignore ranges below this [m] (a range of 0 always)");
 	c.write(s, "max_range", max_range, 25, 12, "Ignore ranges above this [m] (0: no limit)");
 }
 
@@ -192,7 +192,10 @@ void CMeasurementExtractor::addRangeBearing(const mrpt::obs::CObservationBearing
 			m_stats.rejectedNoLandmarkID++;
 			continue;
 		}
-		if (d.range < rangeBearing.min_range || (rangeBearing.max_range > 0 && d.range > rangeBearing.max_range))
+		// A range of 0 (a sensor's "nothing measured") places the point on
+		// the sensor with no bearing: never a measurement, whatever min_range.
+		if (!(d.range > 0) || d.range < rangeBearing.min_range ||
+			(rangeBearing.max_range > 0 && d.range > rangeBearing.max_range))
 		{
 			m_stats.rejectedRangeLimits++;
 			continue;

@@ -39,10 +39,10 @@ mrpt::obs::CObservationBearingRange::Ptr bearingRange()
 	o->sensorLocationOnRobot = mrpt::poses::CPose3D(0.1, 0, 0.3, 0.05, 0, 0);
 	o->sensor_std_range = 0.1f;
 	o->sensor_std_yaw = 0.01f;
-	for (int32_t id : {7, -1, 8})
+	for (int32_t id : {7, -1, 8, 9})
 	{
 		mrpt::obs::CObservationBearingRange::TMeasurement m;
-		m.range = id == 8 ? 20.f : 2.f;
+		m.range = id == 8 ? 20.f : id == 9 ? 0.f : 2.f;  // 9: a range of 0 has no bearing
 		m.yaw = 0.3f;
 		m.pitch = 0;
 		m.landmarkID = id;
@@ -91,7 +91,7 @@ TEST(CMeasurementExtractor, RangeBearingWithIdsSensorPoseAndLimits)
 	EXPECT_NEAR(m.sensorPose.phi, 0.05, 1e-9);
 	EXPECT_NEAR(m.R(0, 0), 0.01, 1e-7);  // from the observation
 	EXPECT_EQ(ex.stats().rejectedNoLandmarkID, 1u);
-	EXPECT_EQ(ex.stats().rejectedRangeLimits, 1u);
+	EXPECT_EQ(ex.stats().rejectedRangeLimits, 2u);
 	ex.rangeBearing.std_range = 0.5;  // the INI overrides the observation
 	EXPECT_NEAR(ex.extract(sf).measurements[0].R(0, 0), 0.25, 1e-12);
 }

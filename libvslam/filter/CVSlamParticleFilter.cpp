@@ -554,15 +554,6 @@ void CVSlamParticleFilter::updateLoopClosureGraph(
 	const std::vector<std::pair<size_t, LandmarkMeasurement>>& placed)
 {
 	if (used.empty() && placed.empty()) return;
-	// The graph holds pose landmarks only; a run with point landmarks goes
-	// without it (see CLandmarkPoseGraph.h).
-	const auto isPoint = [](const LandmarkMeasurement& m) { return m.kind() == LandmarkKind::Point; };
-	if (std::any_of(used.begin(), used.end(), [&](const auto& k) { return isPoint(*k.m); }) ||
-		std::any_of(placed.begin(), placed.end(), [&](const auto& p) { return isPoint(p.second); }))
-	{
-		m_graph.reset();
-		return;
-	}
 	m_graph->addKeyframe(t, m_particles[bestParticleIndex()].d.pose);
 	bool closesLoop = false;
 	for (const auto& k : used)
@@ -583,11 +574,14 @@ void CVSlamParticleFilter::applyLoopClosure(const CLandmarkPoseGraph::Correction
 	m_stats.loopClosureEdgesLeftOut = c.leftOutEdges;
 	const CVSlamParticle& best = m_particles[bestParticleIndex()].d;
 	LandmarkBank bank = best.bank;
-	for (const auto& [slot, pose] : c.landmarks)
+	for (const auto& l : c.landmarks)
 	{
-		LandmarkEstimate e = bank[slot];
-		e.mean = se2::toVector(pose);
-		bank.set(slot, e);
+		LandmarkEstimate e = bank[l.slot];
+		if (l.kind == LandmarkKind::Point)
+			e.mean.head<2>() = Eigen::Vector2d(l.pose.x, l.pose.y);
+		else
+			e.mean = se2::toVector(l.pose);
+		bank.set(l.slot, e);
 	}
 	const se2::Pose anchor = cloudMean(normalizedLinearWeights());
 	const se2::Pose shift = se2::compose(c.keyframe, se2::inverse(anchor));

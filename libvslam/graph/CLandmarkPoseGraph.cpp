@@ -1,5 +1,6 @@
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/graph/CLandmarkPoseGraph.h>
+#include <libvslam/models/CLandmarkModel.h>
 #include <libvslam/models/ChiSquare.h>
 
 #include <Eigen/LU>
@@ -18,6 +19,24 @@ constexpr double kLostOdometryVarPhi = 10;
 constexpr double kCovarianceFloor = 1e-6;
 /** Levenberg-Marquardt iterations per solve: the graphs converge in far fewer. */
 constexpr uint32_t kMaxIterations = 50;
+/** A point landmark is a pose node whose heading nothing measures: its
+ * edges carry this variance on the heading [rad^2], which keeps the
+ * normal equations definite and moves nothing else (its cost is at most
+ * pi^2 / 1e6). */
+constexpr double kUnmeasuredHeadingVar = 1e6;
+
+/** A measurement as an edge from the robot's keyframe to the landmark:
+ * the landmark frame in the robot frame (pose kind), or the point in the
+ * robot frame with its range-bearing noise carried through (point kind). */
+std::pair<se2::Pose, Eigen::Matrix3d> edgeOf(const LandmarkMeasurement& m)
+{
+	if (m.kind() == LandmarkKind::Pose) return {{m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R)};
+	const LandmarkEstimate inRobot = landmarkModel(LandmarkKind::Point).initialize({0, 0, 0}, m);
+	Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+	cov.topLeftCorner<2, 2>() = inRobot.cov.topLeftCorner<2, 2>();
+	cov(2, 2) = kUnmeasuredHeadingVar;
+	return {{inRobot.mean[0], inRobot.mean[1], 0}, cov};
+}
 }  // namespace
 
 void CLandmarkPoseGraph::TOptions::loadFromConfigFile(
@@ -62,8 +81,8 @@ size_t CLandmarkPoseGraph::addNode(const se2::Pose& guess)
 	return m_nodes.size() - 1;
 }
 
-void CLandmarkPoseGraph::addEdge(
-	size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, EdgeKind kind)
+void CLandmarkPoseGraph::addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov,
+	EdgeKind kind, LandmarkKind landmark)
 {
 	PoseGraphEdge e;
 	e.from = from;
@@ -71,7 +90,7 @@ void CLandmarkPoseGraph::addEdge(
 	e.z = z;
 	e.information = (cov + kCovarianceFloor * Eigen::Matrix3d::Identity()).inverse();
 	m_edges.push_back(e);
-	m_edgeStates.push_back({kind, true});
+	m_edgeStates.push_back({kind, true, static_cast<uint8_t>(stateDim(landmark))});
 }
 
 void CLandmarkPoseGraph::addKeyframe(mrpt::Clock::time_point t, const se2::Pose& guess)
@@ -102,18 +121,18 @@ std::vector<std::pair<mrpt::Clock::time_point, se2::Pose>> CLandmarkPoseGraph::k
 void CLandmarkPoseGraph::placeLandmark(size_t slot, const LandmarkMeasurement& m)
 {
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: landmark before any keyframe");
-	const se2::Pose z{m.z[0], m.z[1], m.z[2]};
+	const auto [z, cov] = edgeOf(m);
 	const size_t node = addNode(se2::compose(m_nodes[m_lastKeyframeNode], z));
-	addEdge(m_lastKeyframeNode, node, z, Eigen::Matrix3d(m.R), EdgeKind::Creation);
-	m_landmarks[slot] = {node, *m_keyframe};
+	addEdge(m_lastKeyframeNode, node, z, cov, EdgeKind::Creation, m.kind());
+	m_landmarks[slot] = {node, *m_keyframe, m.kind()};
 }
 
 bool CLandmarkPoseGraph::addMeasurement(size_t slot, const LandmarkMeasurement& m)
 {
 	if (!m_keyframe) throw std::logic_error("CLandmarkPoseGraph: measurement before any keyframe");
 	auto& landmark = m_landmarks.at(slot);
-	addEdge(m_lastKeyframeNode, landmark.node, {m.z[0], m.z[1], m.z[2]}, Eigen::Matrix3d(m.R),
-		EdgeKind::Measurement);
+	const auto [z, cov] = edgeOf(m);
+	addEdge(m_lastKeyframeNode, landmark.node, z, cov, EdgeKind::Measurement, m.kind());
 	const double gap = std::chrono::duration<double>(*m_keyframe - landmark.lastSeen).count();
 	landmark.lastSeen = *m_keyframe;
 	return gap >= m_options.min_gap_s;
@@ -121,22 +140,24 @@ bool CLandmarkPoseGraph::addMeasurement(size_t slot, const LandmarkMeasurement& 
 
 bool CLandmarkPoseGraph::reviseOutliers()
 {
-	const double gate = chiSquareQuantile(m_options.edge_gate_probability, 3);
+	// An edge's chi-square over its gate: a pose measures 3 values, a point 2.
+	const double gates[4] = {0, 0, chiSquareQuantile(m_options.edge_gate_probability, 2),
+		chiSquareQuantile(m_options.edge_gate_probability, 3)};
+	const auto overGate = [&](size_t k) { return poseGraphChi2(m_nodes, m_edges[k]) / gates[m_edgeStates[k].dof]; };
 	// Bring back every edge the solution now explains ...
 	bool changed = false;
 	for (size_t k = 0; k < m_edges.size(); k++)
-		if (m_edgeStates[k].kind == EdgeKind::Measurement && !m_edgeStates[k].active &&
-			poseGraphChi2(m_nodes, m_edges[k]) <= gate)
+		if (m_edgeStates[k].kind == EdgeKind::Measurement && !m_edgeStates[k].active && overGate(k) <= 1)
 			m_edgeStates[k].active = true, changed = true;
 	if (changed) return true;
 	// ... else leave out the one it explains worst, if outside the gate.
 	std::optional<size_t> worst;
-	double worstChi2 = gate;
+	double worstRatio = 1;
 	for (size_t k = 0; k < m_edges.size(); k++)
 	{
 		if (m_edgeStates[k].kind != EdgeKind::Measurement || !m_edgeStates[k].active) continue;
-		const double chi2 = poseGraphChi2(m_nodes, m_edges[k]);
-		if (chi2 > worstChi2) worst = k, worstChi2 = chi2;
+		const double ratio = overGate(k);
+		if (ratio > worstRatio) worst = k, worstRatio = ratio;
 	}
 	if (!worst) return false;
 	m_edgeStates[*worst].active = false;
@@ -158,7 +179,9 @@ CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
 		active.clear();
 		for (size_t k = 0; k < m_edges.size(); k++)
 			if (m_edgeStates[k].active) active.push_back(m_edges[k]);
-		out.chi2 = solvePoseGraph(m_nodes, active, 0, kMaxIterations).finalCost;
+		const PoseGraphSolveReport report = solvePoseGraph(m_nodes, active, 0, kMaxIterations);
+		out.chi2 = report.finalCost;
+		out.iterations += report.iterations;
 		if (revision == kMaxRevisions || !reviseOutliers()) break;
 	}
 	out.leftOutEdges = static_cast<size_t>(std::count_if(
@@ -166,6 +189,6 @@ CLandmarkPoseGraph::Correction CLandmarkPoseGraph::optimize()
 	out.keyframe = m_nodes[m_lastKeyframeNode];
 	out.landmarks.reserve(m_landmarks.size());
 	for (const auto& [slot, landmark] : m_landmarks)
-		out.landmarks.emplace_back(slot, m_nodes[landmark.node]);
+		out.landmarks.push_back({slot, landmark.kind, m_nodes[landmark.node]});
 	return out;
 }

@@ -20,7 +20,10 @@
  * come back, or else the one with the largest chi-square is left out if it
  * exceeds a gate, and the graph is solved again (up to 10 revisions per
  * optimization; nothing is left out for good).
- * Only pose landmarks take part; point (range-bearing) landmarks do not.
+ * Point (range-bearing) landmarks take part as nodes whose heading nothing
+ * measures: a measurement is the point in the robot frame, with the range
+ * and bearing noise carried through, and no information on the heading.
+ * One solver then serves both kinds, and a run may mix them.
  *
  * Bounded size: every frame with a measurement adds a keyframe, so a long
  * run would make every solve, and the run, ever slower. Past
@@ -77,12 +80,20 @@ class CLandmarkPoseGraph
 	{
 		/** The latest keyframe (the robot pose of the current frame). */
 		se2::Pose keyframe{0, 0, 0};
+		struct Landmark
+		{
+			size_t slot = 0;
+			LandmarkKind kind = LandmarkKind::Pose;
+			se2::Pose pose{0, 0, 0};  //!< a point's heading means nothing
+		};
 		/** Every landmark slot in the graph, with its pose. */
-		std::vector<std::pair<size_t, se2::Pose>> landmarks;
+		std::vector<Landmark> landmarks;
 		/** Measurement edges the gate leaves out of this solution. */
 		size_t leftOutEdges = 0;
 		/** The solution's cost: the sum over the edges in it (PoseGraphSolver.h). */
 		double chi2 = 0;
+		/** Levenberg-Marquardt iterations, over every revision of the edges. */
+		size_t iterations = 0;
 	};
 
 	CLandmarkPoseGraph(const TOptions& options, const se2::Pose& start);
@@ -128,6 +139,7 @@ class CLandmarkPoseGraph
 	{
 		size_t node;
 		mrpt::Clock::time_point lastSeen;
+		LandmarkKind kind = LandmarkKind::Pose;
 	};
 
 	TOptions m_options;
@@ -146,6 +158,7 @@ class CLandmarkPoseGraph
 	{
 		EdgeKind kind = EdgeKind::Odometry;
 		bool active = true;
+		uint8_t dof = 3;  //!< values the edge measures (its chi-square gate's)
 	};
 	std::vector<EdgeState> m_edgeStates;
 	size_t m_lastKeyframeNode = 0;
@@ -156,8 +169,9 @@ class CLandmarkPoseGraph
 	std::map<size_t, LandmarkNode> m_landmarks;
 
 	size_t addNode(const se2::Pose& guess);
-	/** Adds an edge; a measurement gets the Huber threshold of the options. */
-	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, EdgeKind kind);
+	/** Adds an edge from `from` to `to`, measuring z with covariance cov. */
+	void addEdge(size_t from, size_t to, const se2::Pose& z, const Eigen::Matrix3d& cov, EdgeKind kind,
+		LandmarkKind landmark = LandmarkKind::Pose);
 	/** Removes every second keyframe of the older half (see the file
 	 * comment); CLandmarkPoseGraphThinning.cpp. */
 	void thinKeyframes();
