@@ -3,6 +3,7 @@
 #include <libvslam/eval/TrajectoryAssociation.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace vslam
@@ -10,31 +11,30 @@ namespace vslam
 namespace
 {
 /** Least-squares rotation + translation in 2-D, and with `withScale` a
- * scale (Umeyama 1991), that map the estimates onto the truth: truth ~
- * R(theta) scale x + t. */
+ * scale, that map the estimates onto the truth: truth ~ R(theta) scale x + t
+ * (Umeyama 1991, Eigen's implementation). */
 se2::Pose bestAlignment(const std::vector<AssociatedPose>& pairs, bool withScale, double& scale)
 {
-	Eigen::Vector2d me(0, 0), mg(0, 0);
-	for (const auto& p : pairs)
-		me += Eigen::Vector2d(p.estimate.x, p.estimate.y), mg += Eigen::Vector2d(p.truth.x, p.truth.y);
-	me /= double(pairs.size());
-	mg /= double(pairs.size());
-	double sdot = 0, scross = 0, spread = 0;
-	for (const auto& p : pairs)
+	const auto n = static_cast<Eigen::Index>(pairs.size());
+	Eigen::Matrix2Xd estimate(2, n), truth(2, n);
+	for (Eigen::Index i = 0; i < n; i++)
 	{
-		const Eigen::Vector2d a = Eigen::Vector2d(p.estimate.x, p.estimate.y) - me;
-		const Eigen::Vector2d b = Eigen::Vector2d(p.truth.x, p.truth.y) - mg;
-		sdot += a.dot(b);
-		scross += a.x() * b.y() - a.y() * b.x();
-		spread += a.squaredNorm();
+		const AssociatedPose& p = pairs[static_cast<size_t>(i)];
+		estimate.col(i) << p.estimate.x, p.estimate.y;
+		truth.col(i) << p.truth.x, p.truth.y;
 	}
-	const double theta = std::atan2(scross, sdot);
-	// The scale that minimizes the squared errors at that rotation; none
-	// for an estimate that does not move (a single point has no scale).
-	scale = withScale && spread > 0 ? std::hypot(sdot, scross) / spread : 1;
-	const Eigen::Vector2d t = mg - scale * Eigen::Vector2d(std::cos(theta) * me.x() - std::sin(theta) * me.y(),
-											   std::sin(theta) * me.x() + std::cos(theta) * me.y());
-	return {t.x(), t.y(), theta};
+	// An estimate that does not move has no rotation or scale to find (a
+	// single point): only the offset of the means.
+	const Eigen::Vector2d mean = estimate.rowwise().mean();
+	if ((estimate.colwise() - mean).squaredNorm() == 0)
+	{
+		scale = 1;
+		const Eigen::Vector2d t = truth.rowwise().mean() - mean;
+		return {t.x(), t.y(), 0};
+	}
+	const Eigen::Matrix3d T = Eigen::umeyama(estimate, truth, withScale);
+	scale = T.block<2, 1>(0, 0).norm();
+	return {T(0, 2), T(1, 2), std::atan2(T(1, 0), T(0, 0))};
 }
 }  // namespace
 

@@ -1,38 +1,29 @@
 #include <libvslam/models/ChiSquare.h>
 
-#include <cmath>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <stdexcept>
 
 namespace vslam
 {
+namespace
+{
+boost::math::chi_squared distribution(int dof)
+{
+	if (dof < 1) throw std::invalid_argument("chi-square: dof must be at least 1");
+	return boost::math::chi_squared(dof);
+}
+}  // namespace
+
 double chiSquareCdf(double x, int dof)
 {
-	if (x <= 0) return 0;
-	switch (dof)
-	{
-		case 1:
-			return std::erf(std::sqrt(x / 2));
-		case 2:
-			return -std::expm1(-x / 2);
-		case 3:
-			return std::erf(std::sqrt(x / 2)) -
-				std::sqrt(2 * x / M_PI) * std::exp(-x / 2);
-		default:
-			throw std::invalid_argument("chiSquareCdf: dof must be 1..3");
-	}
+	const auto d = distribution(dof);
+	return x <= 0 ? 0 : boost::math::cdf(d, x);
 }
 
 double chiSquareQuantile(double p, int dof)
 {
-	if (!(p > 0 && p < 1))
-		throw std::invalid_argument("chiSquareQuantile: p must be in (0,1)");
-	double lo = 0, hi = 1;
-	while (chiSquareCdf(hi, dof) < p) hi *= 2;
-	for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; i++)
-	{
-		const double mid = 0.5 * (lo + hi);
-		(chiSquareCdf(mid, dof) < p ? lo : hi) = mid;
-	}
-	return 0.5 * (lo + hi);
+	const auto d = distribution(dof);
+	if (!(p > 0 && p < 1)) throw std::invalid_argument("chiSquareQuantile: p must be in (0,1)");
+	return boost::math::quantile(d, p);
 }
 }  // namespace vslam

@@ -1,12 +1,12 @@
 #pragma once
 /** \file ChiSquare.h
- * Exact chi-square CDF and quantile for 1..3 degrees of freedom (closed
- * forms), used for validation gates. MRPT's chi2inv is a Wilson-Hilferty
- * approximation. */
+ * Chi-square CDF and quantile for validation gates, any degrees of freedom
+ * (Boost.Math: accurate to the last digits, where MRPT's chi2inv is a
+ * Wilson-Hilferty approximation). */
 namespace vslam
 {
-/** P(X <= x) for X ~ chi2(dof), dof in 1..3. */
+/** P(X <= x) for X ~ chi2(dof), dof >= 1. */
 double chiSquareCdf(double x, int dof);
-/** The x with chiSquareCdf(x, dof) = p, for p in (0, 1), dof in 1..3. */
+/** The x with chiSquareCdf(x, dof) = p, for p in (0, 1), dof >= 1. */
 double chiSquareQuantile(double p, int dof);
 }  // namespace vslam
