@@ -21,7 +21,8 @@ const char* kUsage =
 	"                     [--max-step-gap S] [--std-range M] [--std-bearing-deg D]\n"
 	"                     [--sigma-T S] [--sigma-R S] [--sigma-R-per-meter S]\n"
 	"  --odometry-delay S   the robot moves S seconds after its odometry rows\n"
-	"                       (default 0.15, measured on MRCLAM Dataset 6)\n"
+	"                       (default: estimated from the robot's own landmark\n"
+	"                       sightings, no ground truth used)\n"
 	"  --sigma-*            odometry noise model written into each action's\n"
 	"                       covariance (defaults 0.08, 0.1, 0.1: robot 1's odometry)\n";
 }  // namespace
@@ -77,7 +78,10 @@ int main(int argc, const char** argv)
 				  << " false barcodes, " << im.droppedRobotSightings << " other robots, "
 				  << im.droppedOutsideOdometry << " outside the odometry span); start pose "
 				  << "in the world frame: (" << im.startPoseWorld.x << ", " << im.startPoseWorld.y
-				  << ", " << im.startPoseWorld.phi << " rad) -> " << rawlog << "\n";
+				  << ", " << im.startPoseWorld.phi << " rad); odometry delay " << im.odometryDelay << " s ("
+				  << (o.odometry_delay ? "given" : im.odometryDelayEstimated ? "estimated from the sightings"
+																			: "too few sightings to tell")
+				  << ") -> " << rawlog << "\n";
 		return 0;
 	});
 }

@@ -1,5 +1,6 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/MrclamImporter.h>
+#include <libvslam/io/OdometryDelay.h>
 #include <libvslam/io/NumericTable.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
@@ -115,6 +116,35 @@ Detections landmarkDetections(const std::vector<std::vector<double>>& measRows, 
 	return images;
 }
 
+/** The landmark sightings (robots and false barcodes left out). */
+std::vector<BearingSighting> sightingsOf(const std::vector<std::vector<double>>& measRows,
+	const std::string& measFile, const std::map<int, int>& subjectOfBarcode)
+{
+	std::vector<BearingSighting> sightings;
+	for (size_t i = 0; i < measRows.size(); i++)
+	{
+		const auto& r = measRows[i];
+		const auto it = subjectOfBarcode.find(integerField(r[1], measFile, i));
+		if (it != subjectOfBarcode.end() && it->second > 5) sightings.push_back({r[0], it->second, r[2], r[3]});
+	}
+	return sightings;
+}
+
+/** Moves the odometry rows' times by the delay given, or else by the one
+ * the sightings show (none if they cannot tell). */
+void shiftOdometry(std::vector<std::vector<double>>& odoRows, const std::optional<double>& given,
+	const std::vector<BearingSighting>& sightings, MrclamImport& out)
+{
+	std::optional<double> delay = given;
+	if (!delay)
+	{
+		delay = estimateOdometryDelay(odoRows, sightings);
+		out.odometryDelayEstimated = delay.has_value();
+	}
+	out.odometryDelay = delay.value_or(0);
+	for (auto& r : odoRows) r[0] += out.odometryDelay;
+}
+
 /** Step times from t0: every image, and fillers so that no two steps are
  * more than maxGap apart, up to tEnd. */
 std::vector<double> stepTimes(const Detections& images, double t0, double tEnd, double maxGap)
@@ -173,7 +203,6 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 		subjectOfBarcode[integerField(barcodeRows[i][1], barcodesFile, i)] =
 			integerField(barcodeRows[i][0], barcodesFile, i);
 	auto odoRows = readNumericTable(odoFile, "#", 3);
-	for (auto& r : odoRows) r[0] += o.odometry_delay;
 	const auto measRows = readNumericTable(measFile, "#", 4);
 	Trajectory gtWorld;
 	for (const auto& r : readNumericTable(gtFile, "#", 4)) gtWorld.push_back({r[0], {r[1], r[2], r[3]}});
@@ -183,6 +212,7 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 	checkSorted(measRows, measFile);
 
 	MrclamImport out;
+	shiftOdometry(odoRows, o.odometry_delay, sightingsOf(measRows, measFile, subjectOfBarcode), out);
 	out.odometryRows = odoRows.size();
 	out.measurementRows = measRows.size();
 	OdometryIntegrator odometry(odoRows);

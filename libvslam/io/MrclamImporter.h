@@ -27,6 +27,7 @@
 #include <libvslam/models/CMotionModel.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,12 +38,11 @@ struct TMrclamImportOptions
 	int robot = 1;
 	/** Longest time between two steps (s): odometry-only steps fill gaps. */
 	double max_step_gap = 0.25;
-	/** The robots move about this long after their odometry rows say so
-	 * (the rows look like commanded twist): odometry row times are shifted
-	 * by it. Measured by cross-correlating odometry omega with the
-	 * ground-truth yaw rate: +0.15 s on robots 1, 2 and 3 of Dataset 6
-	 *. 0 keeps the file's times. */
-	double odometry_delay = 0.15;  //!< s
+	/** The robots move this long after their odometry rows say so (the
+	 * rows look like commanded twist): odometry row times are shifted by it.
+	 * Unset: estimated from the robot's own landmark sightings
+	 * (OdometryDelay.h), with no ground truth; 0 keeps the file's times. */
+	std::optional<double> odometry_delay;  //!< s
 	/** Sensor noise written into each observation (dataset README: robust
 	 * std 0.13 m and 0.009 rad). */
 	double std_range = 0.15;  //!< m
@@ -76,6 +76,8 @@ struct MrclamImport
 	se2::Pose startPoseWorld;
 	size_t odometryRows = 0, measurementRows = 0, measurementsUsed = 0;
 	size_t droppedFalseBarcodes = 0, droppedRobotSightings = 0, droppedOutsideOdometry = 0;
+	double odometryDelay = 0;  //!< s, the shift applied to the odometry rows
+	bool odometryDelayEstimated = false;  //!< from the sightings (else given, or 0 for too few)
 };
 
 /** Reads `<dir>/Barcodes.dat`, `Landmark_Groundtruth.dat` and

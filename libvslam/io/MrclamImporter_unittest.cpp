@@ -44,7 +44,7 @@ TEST(MrclamImporter, ConvertsOdometryMeasurementsAndGroundTruth)
 	writeDataset(dir.path().string());
 	TMrclamImportOptions o;
 	o.max_step_gap = 0.5;
-	o.odometry_delay = 0;
+	o.odometry_delay = 0.0;
 	const MrclamImport im = importMrclam(dir.path().string(), o);
 	EXPECT_EQ(im.odometryRows, 1001u);
 	EXPECT_EQ(im.measurementRows, 4u);
@@ -164,7 +164,7 @@ TEST(MrclamImporter, RealDataset6Robot1)
 	if (!std::filesystem::exists(dir / "Robot1_Odometry.dat"))
 		GTEST_SKIP() << "MRCLAM data absent (" << dir << "): real-data test skipped";
 	TMrclamImportOptions o;
-	o.odometry_delay = 0;
+	o.odometry_delay = 0.0;
 	const MrclamImport im = importMrclam(dir.string(), o);
 	EXPECT_EQ(im.landmarks.size(), 15u);
 	EXPECT_GT(im.measurementsUsed, 1000u);
