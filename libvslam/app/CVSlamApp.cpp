@@ -314,6 +314,7 @@ struct CVSlamApp::RunState
 	std::unique_ptr<CVisualFrontEnd> frontEnd;
 	RunSummary::FrontEnd frontEndSummary;
 	double firstT = 0, lastT = 0, stepSumMs = 0;
+	double longestGap = 0;  //!< s between two timed steps
 	bool anyTimed = false;
 };
 
@@ -568,6 +569,7 @@ void CVSlamApp::processStep(RunState& r, const RawlogStep& step, RunSummary& sum
 	const double t = timed ? toSeconds(step.timestamp) : r.lastT;
 	const double dt = r.anyTimed ? t - r.lastT : 0;
 	if (timed && !r.anyTimed) r.firstT = t;
+	if (timed && r.anyTimed) r.longestGap = std::max(r.longestGap, dt);
 	r.anyTimed = r.anyTimed || timed;
 	r.lastT = t;
 	const se2::Pose est = r.filter.meanPose();
@@ -598,6 +600,7 @@ void CVSlamApp::summarizeReader(const CRawlogReader& reader, const RunState& r, 
 {
 	summary.stepMeanMs = summary.steps ? r.stepSumMs / summary.steps : 0;
 	summary.realTimeSpan = r.lastT - r.firstT;
+	summary.longestGap = r.longestGap;
 	summary.actionFrameSteps = reader.actionFrameSteps();
 	summary.observationSteps = reader.observationSteps();
 	summary.skippedObjects = reader.skippedObjects();

@@ -106,13 +106,19 @@ yaml filterNode(const CVSlamParticleFilter& f)
 
 yaml landmarksNode(const CVSlamParticleFilter& f)
 {
-	uint64_t pose = 0, point = 0;
+	uint64_t pose = 0, point = 0, neverSeenAgain = 0;
 	for (size_t i = 0; i < f.landmarkIndex().size(); i++)
-		(f.landmarkIndex().entry(i).key.kind == LandmarkKind::Pose ? pose : point)++;
+	{
+		const auto& entry = f.landmarkIndex().entry(i);
+		(entry.key.kind == LandmarkKind::Pose ? pose : point)++;
+		// Placed, and never measured after: an ID that did not repeat.
+		if (entry.measurements == 0) neverSeenAgain++;
+	}
 	yaml n = yaml::Map();
 	n["total"] = static_cast<uint64_t>(f.landmarkIndex().size());
 	n["pose"] = pose;
 	n["point"] = point;
+	n["never_seen_again"] = neverSeenAgain;
 	const auto& ex = f.extractor().stats();
 	const auto& fs = f.stats();
 	yaml e = yaml::Map();
@@ -184,6 +190,7 @@ mrpt::containers::yaml RunSummary::toYaml(const CVSlamParticleFilter* f) const
 	r["observation_steps"] = observationSteps;
 	r["skipped_objects"] = skippedObjects;
 	r["data_seconds"] = realTimeSpan > 0 ? yaml(realTimeSpan) : yaml();
+	r["longest_gap_seconds"] = realTimeSpan > 0 ? yaml(longestGap) : yaml();
 	y["rawlog"] = r;
 	y["particles"] = static_cast<uint64_t>(f->particlesCount());
 	y["landmarks"] = landmarksNode(*f);

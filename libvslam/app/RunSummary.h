@@ -32,6 +32,7 @@ struct RunSummary
 	double totalSeconds = 0, stepMeanMs = 0, stepMaxMs = 0;
 	double peakMemoryMiB = 0;
 	double realTimeSpan = 0;  //!< seconds of data processed (timestamps; 0: unknown)
+	double longestGap = 0;  //!< longest time between two consecutive timed steps, s
 	std::optional<AteStats> ate, ateAligned, odometryAte;
 	/** The best particle's whole path at the end (most_likely_path.tum):
 	 * the path smoothed by resampling, raw and SE(2)-aligned. */

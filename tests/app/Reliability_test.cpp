@@ -6,6 +6,10 @@
 #include <gtest/gtest.h>
 #include <libvslam/app/RunSummary.h>
 #include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/RawlogWriting.h>
+#include <libvslam/models/SE2.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
 #include <tests/support/RunCommand.h>
@@ -348,6 +352,78 @@ TEST(Reliability, EverySummaryOfACorruptRawlogCorpusIsYaml)
 		}
 	}
 	EXPECT_GE(failed, 12u) << "too few corruptions were caught: the corpus checks too little";
+}
+
+namespace
+{
+/** A robot circling three beacons (IDs 6-8) for 40 s, then switched off
+ * for an hour and circling on for 40 s; beacon 99 is seen once, and two
+ * sightings have impossible ranges: 0 and 50 m (beyond max_range 20). */
+void writeGappedRangeBearingRawlog(const std::string& file)
+{
+	std::vector<ActionFramePair> steps;
+	const double beacons[3][2] = {{3, 0}, {0, 3}, {-3, 0}};
+	se2::Pose truth{0, -1, 0};
+	const se2::Pose increment{0.2 * 0.2, 0, 0.2 * 0.2};  // 0.2 m/s on a 1 m radius
+	for (int k = 0; k < 400; k++)
+	{
+		const double t = 1e9 + 0.2 * k + (k >= 200 ? 3600 : 0);
+		const auto stamp = mrpt::Clock::fromDouble(t);
+		if (k > 0) truth = se2::compose(truth, increment);
+		mrpt::obs::CActionRobotMovement2D move;
+		mrpt::obs::CActionRobotMovement2D::TMotionModelOptions model;
+		model.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+		move.computeFromOdometry(mrpt::poses::CPose2D(k > 0 ? increment.x : 0, 0, k > 0 ? increment.phi : 0), model);
+		move.timestamp = stamp;
+		auto actions = mrpt::obs::CActionCollection::Create();
+		actions->insert(move);
+		auto obs = mrpt::obs::CObservationBearingRange::Create();
+		obs->timestamp = stamp;
+		obs->sensor_std_range = 0.05f;
+		obs->sensor_std_yaw = 0.01f;
+		const auto sight = [&](int id, double x, double y, double range) {
+			mrpt::obs::CObservationBearingRange::TMeasurement m;
+			m.landmarkID = id;
+			m.range = static_cast<float>(range);
+			m.yaw = static_cast<float>(se2::wrap(std::atan2(y - truth.y, x - truth.x) - truth.phi));
+			m.pitch = 0;
+			obs->sensedData.push_back(m);
+		};
+		for (int b = 0; b < 3; b++)
+		{
+			const double range = std::hypot(beacons[b][0] - truth.x, beacons[b][1] - truth.y);
+			sight(6 + b, beacons[b][0], beacons[b][1], k == 60 && b == 0 ? 0.0 : k == 70 && b == 1 ? 50.0 : range);
+		}
+		if (k == 50) sight(99, 5, 5, std::hypot(5 - truth.x, 5 - truth.y));
+		auto frame = mrpt::obs::CSensoryFrame::Create();
+		frame->insert(obs);
+		steps.emplace_back(actions, frame);
+	}
+	writeActionFrameRawlog(file, steps);
+}
+}  // namespace
+
+TEST(Reliability, AnHourLongGapAnIdSeenOnceAndImpossibleRangesAreCountedNotFatal)
+{
+	TempDir dir;
+	const std::string rawlog = dir.file("gap.rawlog");
+	writeGappedRangeBearingRawlog(rawlog);
+	const auto r = runCommand(q(kVslam) + " " + q(kSource + "/config_ini/mrclam_range_bearing.ini") + " " + q(rawlog) +
+		" --out " + q(dir.file("o")) + " --quiet --set vslam_range_bearing.max_range=20");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto summary = readRunSummary(dir.file("o/run_summary.yaml"));
+	EXPECT_EQ(summary["status"].as<std::string>(), "completed");
+	EXPECT_NEAR(summaryNumber(summary, "rawlog.longest_gap_seconds"), 3600.2, 1e-3);
+	EXPECT_EQ(summaryNumber(summary, "measurements.rejected.range_limits"), 2);
+	EXPECT_EQ(summaryNumber(summary, "landmarks.total"), 4);
+	EXPECT_EQ(summaryNumber(summary, "landmarks.never_seen_again"), 1);
+	// Every pose finite, online and smoothed, across the gap.
+	const Trajectory path = readTrajectory(dir.file("o/estimated_path.tum"));
+	ASSERT_EQ(path.size(), 400u);
+	for (const auto& p : path) ASSERT_TRUE(std::isfinite(p.pose.x) && std::isfinite(p.pose.y) && std::isfinite(p.pose.phi));
+	const Trajectory smoothed = readTrajectory(dir.file("o/pose_graph_path.tum"));
+	ASSERT_EQ(smoothed.size(), 400u);
+	for (const auto& p : smoothed) ASSERT_TRUE(std::isfinite(p.pose.x) && std::isfinite(p.pose.phi));
 }
 
 TEST(Reliability, OutOfMemoryEndsWithExitFourAndTheSummarySayingSo)
