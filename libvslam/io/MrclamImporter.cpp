@@ -79,6 +79,19 @@ void checkSorted(const std::vector<std::vector<double>>& rows, const std::string
 }
 using Detections = std::map<double, std::vector<mrpt::obs::CObservationBearingRange::TMeasurement>>;
 
+constexpr int kFalseBarcode = -1;
+
+/** The subject a measurement row's barcode names (kFalseBarcode: none). */
+int subjectOf(const std::vector<double>& row, const std::string& measFile, size_t i,
+	const std::map<int, int>& subjectOfBarcode)
+{
+	const auto it = subjectOfBarcode.find(integerField(row[1], measFile, i));
+	return it == subjectOfBarcode.end() ? kFalseBarcode : it->second;
+}
+
+/** Subjects 1..5 are the robots; the landmarks are 6..20. */
+bool isRobot(int subject) { return subject <= 5; }
+
 /** The landmark detections by image time, within the odometry's span;
  * robots seen, false barcodes and detections outside the span counted. */
 Detections landmarkDetections(const std::vector<std::vector<double>>& measRows, const std::string& measFile,
@@ -88,13 +101,13 @@ Detections landmarkDetections(const std::vector<std::vector<double>>& measRows, 
 	for (size_t i = 0; i < measRows.size(); i++)
 	{
 		const auto& r = measRows[i];
-		const auto it = subjectOfBarcode.find(integerField(r[1], measFile, i));
-		if (it == subjectOfBarcode.end())
+		const int subject = subjectOf(r, measFile, i, subjectOfBarcode);
+		if (subject == kFalseBarcode)
 		{
 			out.droppedFalseBarcodes++;
 			continue;
 		}
-		if (it->second <= 5)
+		if (isRobot(subject))
 		{
 			out.droppedRobotSightings++;
 			continue;
@@ -108,7 +121,7 @@ Detections landmarkDetections(const std::vector<std::vector<double>>& measRows, 
 		m.range = static_cast<float>(r[2]);
 		m.yaw = static_cast<float>(r[3]);
 		m.pitch = 0;
-		m.landmarkID = it->second;
+		m.landmarkID = subject;
 		images[r[0]].push_back(m);
 		out.measurementsUsed++;
 	}
@@ -124,8 +137,8 @@ std::vector<BearingSighting> sightingsOf(const std::vector<std::vector<double>>&
 	for (size_t i = 0; i < measRows.size(); i++)
 	{
 		const auto& r = measRows[i];
-		const auto it = subjectOfBarcode.find(integerField(r[1], measFile, i));
-		if (it != subjectOfBarcode.end() && it->second > 5) sightings.push_back({r[0], it->second, r[2], r[3]});
+		const int subject = subjectOf(r, measFile, i, subjectOfBarcode);
+		if (subject != kFalseBarcode && !isRobot(subject)) sightings.push_back({r[0], subject, r[2], r[3]});
 	}
 	return sightings;
 }
@@ -133,12 +146,13 @@ std::vector<BearingSighting> sightingsOf(const std::vector<std::vector<double>>&
 /** Moves the odometry rows' times by the delay given, or else by the one
  * the sightings show (none if they cannot tell). */
 void shiftOdometry(std::vector<std::vector<double>>& odoRows, const std::optional<double>& given,
-	const std::vector<BearingSighting>& sightings, MrclamImport& out)
+	const std::vector<std::vector<double>>& measRows, const std::string& measFile,
+	const std::map<int, int>& subjectOfBarcode, MrclamImport& out)
 {
 	std::optional<double> delay = given;
 	if (!delay)
 	{
-		delay = estimateOdometryDelay(odoRows, sightings);
+		delay = estimateOdometryDelay(odoRows, sightingsOf(measRows, measFile, subjectOfBarcode));
 		out.odometryDelayEstimated = delay.has_value();
 	}
 	out.odometryDelay = delay.value_or(0);
@@ -212,7 +226,7 @@ MrclamImport importMrclam(const std::string& dir, const TMrclamImportOptions& o)
 	checkSorted(measRows, measFile);
 
 	MrclamImport out;
-	shiftOdometry(odoRows, o.odometry_delay, sightingsOf(measRows, measFile, subjectOfBarcode), out);
+	shiftOdometry(odoRows, o.odometry_delay, measRows, measFile, subjectOfBarcode, out);
 	out.odometryRows = odoRows.size();
 	out.measurementRows = measRows.size();
 	OdometryIntegrator odometry(odoRows);
