@@ -1,6 +1,7 @@
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/app/KeyframesAlongOdometry.h>
 #include <libvslam/app/InterruptFlag.h>
+#include <libvslam/app/RunMap.h>
 #include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/ConfigReference.h>
@@ -24,6 +25,7 @@
 #include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/LandmarkMapFile.h>
 #include <libvslam/io/RunScene.h>
+#include <libvslam/io/VSlamMapFile.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/obs/CObservationImage.h>
@@ -178,6 +180,9 @@ bool CVSlamApp::initialize(int argc, const char** argv)
 			"': no rawlog: give it on the command line or set [vslam] rawlog_file");
 	m_groundTruthFile = resolveInput(appOptions.ground_truth_file);
 	m_priorMapFile = resolveInput(appOptions.prior_map_file);
+	if (appOptions.localization_only && m_priorMapFile.empty())
+		throw ConfigError("configuration '" + m_configFile +
+			"': [vslam] localization_only = true needs [vslam] prior_map_file (the map to localize in)");
 	m_outputDir = outDir.empty() ? appOptions.output_dir : outDir;
 	if (m_quiet) appOptions.show_progress = false;
 	return true;
@@ -312,6 +317,7 @@ struct CVSlamApp::RunState
 	Trajectory estimated, odometry;
 	se2::Pose odo;
 	std::unique_ptr<CVisualFrontEnd> frontEnd;
+	std::shared_ptr<const CVSlamMap> priorMap;
 	RunSummary::FrontEnd frontEndSummary;
 	double firstT = 0, lastT = 0, stepSumMs = 0;
 	double longestGap = 0;  //!< s between two timed steps
@@ -377,14 +383,17 @@ int CVSlamApp::run()
 	Trajectory groundTruth;
 	if (!m_groundTruthFile.empty())
 		groundTruth = naming("ground_truth_file", [&] { return readTrajectory(m_groundTruthFile); });
-	LandmarkMap priorMap;
+	std::shared_ptr<const CVSlamMap> priorMap;
 	if (!m_priorMapFile.empty())
 		priorMap = naming("prior_map_file", [&] {
-			return readLandmarkMap(m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi);
+			return std::make_shared<const CVSlamMap>(
+				readPriorMap(m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi));
 		});
 	RawlogStep step;  // read before the filter exists: it may set the start
 	bool haveStep = reader.next(step);
 	if (appOptions.initial_pose_from_ground_truth) startFromGroundTruth(groundTruth, haveStep, step);
+	// Before the output folder is touched, where the first step shows it.
+	if (haveStep && step.sf && hasImages(*step.sf)) checkImagesCanBeLocalized(priorMap.get());
 
 	RunSummary summary;
 	summary.seed = appOptions.RANDOM_SEED >= 0
@@ -407,7 +416,11 @@ int CVSlamApp::run()
 	try
 	{
 		state = std::make_unique<RunState>(folder, filterOptions, summary.runId);
-		if (!priorMap.empty()) state->filter.setPriorMap(priorMap);
+		if (priorMap)
+		{
+			state->priorMap = priorMap;
+			state->filter.setPriorMap(estimatesOf(*priorMap), {}, appOptions.localization_only);
+		}
 		processSteps(*state, reader, step, haveStep, summary);
 		state->outputs.close();
 	}
@@ -441,6 +454,35 @@ int CVSlamApp::run()
 	std::cerr << "vslam: outputs in " << m_outputDir << "/\n";
 	if (failure) std::rethrow_exception(failure);
 	return summary.status == "interrupted" ? kInterrupted : kOk;
+}
+
+void CVSlamApp::checkImagesCanBeLocalized(const CVSlamMap* priorMap) const
+{
+	if (appOptions.localization_only && priorMap && priorMap->appearances.empty())
+		throw ConfigError("[vslam] prior_map_file '" + m_priorMapFile +
+			"' holds no visual landmark's appearance, so camera images cannot be localized in it "
+			"(localization_only): give the final_map.vslam of a camera run");
+}
+
+std::unique_ptr<CVisualFrontEnd> CVSlamApp::makeFrontEnd(const CVSlamMap* priorMap) const
+{
+	checkImagesCanBeLocalized(priorMap);
+	auto frontEnd = std::make_unique<CVisualFrontEnd>(frontEndOptions);
+	const std::string key = "[vslam] prior_map_file '" + m_priorMapFile + "'";
+	if (priorMap)
+	{
+		try
+		{
+			// The odometry starts at the initial pose: its frame is the map's.
+			frontEnd->loadMap(*priorMap, mrpt::poses::CPose2D());
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw ConfigError(key + ": " + e.what() + " ([" + TVisualFrontEndOptions::kSection + "])");
+		}
+	}
+	if (appOptions.localization_only) frontEnd->fixMap();
+	return frontEnd;
 }
 
 void CVSlamApp::startOutputs(const RunOutputFolder& folder, RunSummary& summary) const
@@ -539,7 +581,7 @@ void CVSlamApp::processStep(RunState& r, const RawlogStep& step, RunSummary& sum
 	if (hasImages(*step.sf))
 	{
 		// Camera images: the front-end turns them into measurements.
-		if (!r.frontEnd) r.frontEnd = std::make_unique<CVisualFrontEnd>(frontEndOptions);
+		if (!r.frontEnd) r.frontEnd = makeFrontEnd(r.priorMap.get());
 		const auto m = replaceImagesWithMeasurements(
 			*r.frontEnd, *step.sf, mrpt::poses::CPose2D(r.odo.x, r.odo.y, r.odo.phi), entry);
 		r.frontEndSummary.images += m.images;
@@ -634,6 +676,7 @@ void CVSlamApp::writeFinalOutputs(
 	// Also after an error or an interruption: what the run got to.
 	const auto& best = r.filter.particle(r.filter.bestParticleIndex());
 	writeLandmarkMap(folder.file("final_map.txt"), r.filter.landmarkIndex(), best.bank, summary.runId);
+	writeVSlamMap(folder.file("final_map.vslam"), mapOfRun(r.filter, r.frontEnd.get(), summary.runId));
 	Trajectory smoothed;  // the best particle's path
 	{
 		COutputFile f(folder.file("most_likely_path.txt"), COutputFile::Mode::Atomic);

@@ -12,7 +12,8 @@
  *   log_odometry_path.txt    dead reckoning (rbpf-slam's odometry format)
  *   log_filter_steps.txt     ESS, dual share, kidnap test, landmarks, time
  * and at the end (also after an error or Ctrl-C), each atomically:
- *   final_map.txt, most_likely_path.txt/.tum, pose_graph_path.tum,
+ *   final_map.txt, final_map.vslam (the whole map, for prior_map_file),
+ *   most_likely_path.txt/.tum, pose_graph_path.tum,
  *   run_summary.yaml (also at the start, "status: running").
  * config_used.ini (the effective configuration, which reruns the run) is
  * written at the start. Outputs an earlier run left in the folder are
@@ -30,11 +31,15 @@
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace vslam
 {
+class CVisualFrontEnd;
+class CVSlamMap;
+
 class CVSlamApp
 {
    public:
@@ -77,6 +82,12 @@ class CVSlamApp
 
 	void loadConfig(const std::string& file, const std::vector<std::string>& overrides);
 	std::string resolveInput(const std::string& path) const;
+	/** The front-end, with the prior map's visual landmarks (fixed with
+	 * localization_only); throws ConfigError if they cannot be used. */
+	std::unique_ptr<CVisualFrontEnd> makeFrontEnd(const CVSlamMap* priorMap) const;
+	/** Throws ConfigError if images are to be localized (localization_only)
+	 * in a map without appearances. */
+	void checkImagesCanBeLocalized(const CVSlamMap* priorMap) const;
 	void startFromGroundTruth(const Trajectory& groundTruth, bool haveStep, RawlogStep& step);
 	std::string effectiveConfigText(uint64_t seed, const std::string& outputDir) const;
 	/** Clears the folder, names the run, writes config_used.ini and the

@@ -20,7 +20,7 @@ const std::vector<std::string>& RunOutputFolder::outputNames()
 {
 	static const std::vector<std::string> names = {"run_summary.yaml", "config_used.ini",
 		"log_estimated_path.txt", "estimated_path.tum", "log_odometry_path.txt", "odometry_path.tum",
-		"smoothed_path.tum", "log_filter_steps.txt", "final_map.txt", "most_likely_path.txt",
+		"smoothed_path.tum", "log_filter_steps.txt", "final_map.txt", "final_map.vslam", "most_likely_path.txt",
 		"most_likely_path.tum", "pose_graph_path.tum", "pose_graph.graph", "final_map.3Dscene", kSummarySpace};
 	return names;
 }

@@ -12,6 +12,7 @@ void TVSlamAppOptions::loadFromConfigFile(
 	RANDOM_SEED = readInt(c, s, "RANDOM_SEED", RANDOM_SEED, Range::closed(-1, 4294967295.0));
 	ground_truth_file = readString(c, s, "ground_truth_file", ground_truth_file);
 	prior_map_file = readString(c, s, "prior_map_file", prior_map_file);
+	localization_only = readBool(c, s, "localization_only", localization_only);
 	prior_map_std_xy =
 		readDouble(c, s, "prior_map_std_xy", prior_map_std_xy, Range{0, 100, false, true});
 	prior_map_std_phi = readDegreesAsRadians(
@@ -34,7 +35,10 @@ void TVSlamAppOptions::saveToConfigFile(
 	c.write(s, "ground_truth_file", ground_truth_file, 25, 12,
 		"Optional ground truth (TUM, rbpf-slam path, or MRPT per-step pose list) for error figures");
 	c.write(s, "prior_map_file", prior_map_file, 25, 12,
-		"Optional map to start from (a final_map.txt, or rows 'id x y' / 'id x y phi'); relative to this INI");
+		"Optional map to start from (a final_map.vslam or final_map.txt of an earlier run, or rows 'id x y' / "
+		"'id x y phi'); relative to this INI");
+	c.write(s, "localization_only", localization_only, 25, 12,
+		"Keep the prior map fixed (localize in it): no landmark is added, updated or removed");
 	c.write(s, "prior_map_std_xy", prior_map_std_xy, 25, 12,
 		"Position uncertainty of prior-map rows without covariance [m]");
 	c.write(s, "prior_map_std_phi_deg", prior_map_std_phi * 180 / M_PI, 25, 12,

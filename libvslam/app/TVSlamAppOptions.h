@@ -24,9 +24,12 @@ struct TVSlamAppOptions : public mrpt::config::CLoadableOptions
 	 * summary's error figures. */
 	std::string ground_truth_file;
 	/** Optional map to start from (localization in a known map, or map
-	 * continuation): vslam's final_map.txt, or rows 'id x y' (points) /
-	 * 'id x y phi' (poses); see io/LandmarkMapFile.h. */
+	 * continuation): vslam's final_map.vslam (landmarks and what the
+	 * camera recognizes them by), final_map.txt, or rows 'id x y' (points)
+	 * / 'id x y phi' (poses); see io/LandmarkMapFile.h. */
 	std::string prior_map_file;
+	/** Keep the prior map fixed: no landmark is added, updated or removed. */
+	bool localization_only = false;
 	/** Uncertainty of map rows that carry no covariance. */
 	double prior_map_std_xy = 0.05;  //!< m
 	double prior_map_std_phi = 2 * M_PI / 180;  //!< rad (INI: degrees)

@@ -61,8 +61,9 @@ void CVSlamParticleFilter::reset()
 
 void CVSlamParticleFilter::setPriorMap(
 	const std::vector<std::pair<LandmarkKey, LandmarkEstimate>>& map,
-	mrpt::Clock::time_point t)
+	mrpt::Clock::time_point t, bool fixed)
 {
+	m_mapFixed = fixed;
 	LandmarkBank bank = m_particles.empty() ? LandmarkBank() : m_particles[0].d.bank;
 	for (const auto& [key, estimate] : map)
 	{
@@ -187,7 +188,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	// since the last frame no longer links the poses.
 	const bool cloudMoved = verdict == CKidnapDetector::Verdict::Kidnapped ||
 		verdict == CKidnapDetector::Verdict::Reverted;
-	LandmarksToPlace toReinitialize;
+	LandmarksToPlace toReinitialize;  // stays empty with a fixed map: no landmark is suspect
 	std::vector<KnownMeasurement> used;
 	if (cloudMoved)
 	{
@@ -226,7 +227,11 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		if (cloudMoved) m_graph->loseOdometry();
 	}
 	m_odometry.reset();
-	const PlacedLandmarks placed = placeLandmarks(frame, firstSightings, toReinitialize);
+	PlacedLandmarks placed;
+	if (m_mapFixed)
+		m_stats.unmappedLandmarkEvents += firstSightings.size() + frame.creations.size();
+	else
+		placed = placeLandmarks(frame, firstSightings, toReinitialize);
 	if (m_graph) updateLoopClosureGraph(frame.timestamp, used, placed);
 	for (auto& p : m_particles) p.d.path.push(frame.timestamp, p.d.pose);
 	m_lastFrame.essAfterUpdate = ESS();
@@ -343,7 +348,7 @@ void CVSlamParticleFilter::switchToRelocalizationHypothesis(mrpt::Clock::time_po
 	// pose the robot did not have; streaks so far were the kidnap's doing.
 	m_lastKidnap = LastKidnap{t, {}};
 	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
-		if (!m_kidnap.anchored(e.created) && !e.suspect)
+		if (!m_mapFixed && !m_kidnap.anchored(e.created) && !e.suspect)
 		{
 			e.suspect = true;
 			m_lastKidnap->markedSuspect.push_back(e.key);
@@ -363,7 +368,7 @@ void CVSlamParticleFilter::revertLastKidnap()
 	for (const auto& key : m_lastKidnap->markedSuspect)
 		if (const auto slot = m_index.find(key)) m_index.entry(*slot).suspect = false;
 	m_index.forEachEntry([&](CLandmarkIndex::Entry& e) {
-		if (e.created >= m_lastKidnap->time) e.suspect = true;
+		if (!m_mapFixed && e.created >= m_lastKidnap->time) e.suspect = true;
 	});
 	m_lastKidnap.reset();
 }
@@ -429,7 +434,7 @@ double CVSlamParticleFilter::weighAndUpdateLandmarks(
 		logLik += m_likelihood.logLikelihood(e, k.m->kind());
 		// Only the observed landmark's filter is updated, and only if the
 		// measurement passes this particle's validation gate.
-		if (m_likelihood.inGate(e)) kalmanUpdate(p.bank.mutate(k.slot), e);
+		if (!m_mapFixed && m_likelihood.inGate(e)) kalmanUpdate(p.bank.mutate(k.slot), e);
 	}
 	return logLik;
 }

@@ -51,6 +51,8 @@ struct TFilterStats
 	uint64_t landmarksCreatedFromMeasurement = 0;
 	uint64_t landmarksReinitialized = 0;
 	uint64_t duplicateCreations = 0;
+	/** With a fixed map: measurements and creations of landmarks not in it, left out. */
+	uint64_t unmappedLandmarkEvents = 0;
 	uint64_t kidnapsDetected = 0;
 	/** Declared kidnaps another landmark contradicted: the filter went back. */
 	uint64_t kidnapsReverted = 0;
@@ -121,10 +123,13 @@ class CVSlamParticleFilter
 	 * heading change, if any, first corrects the pending odometry. */
 	void processFrame(const FrameMeasurements& frame);
 	/** Seeds every particle with the same prior map (map continuation,
-	 * benchmarks): the bank is shared, O(1) per particle. */
+	 * benchmarks): the bank is shared, O(1) per particle. A `fixed` map is
+	 * for localization only: its landmarks are never updated or moved,
+	 * and a landmark not in it is never added. */
 	void setPriorMap(
 		const std::vector<std::pair<LandmarkKey, LandmarkEstimate>>& map,
-		mrpt::Clock::time_point t = {});
+		mrpt::Clock::time_point t = {}, bool fixed = false);
+	bool mapFixed() const { return m_mapFixed; }
 
 	// ---- outputs --------------------------------------------------------
 	/** Weighted mean pose (circular mean heading), composed with the
@@ -169,6 +174,7 @@ class CVSlamParticleFilter
 	CMeasurementExtractor m_extractor;
 	CLandmarkIndex m_index;
 	COdometryAccumulator m_odometry;
+	bool m_mapFixed = false;
 	TFilterStats m_stats;
 	TFrameReport m_lastFrame;
 	std::vector<PoseGaussianProposal> m_proposalBuffer;  //!< reused per frame

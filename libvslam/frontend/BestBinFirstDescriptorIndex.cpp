@@ -10,16 +10,16 @@ constexpr int kMergeRatio = 4;
 }  // namespace
 
 BestBinFirstDescriptorIndex::BestBinFirstDescriptorIndex(const DescriptorCodec& codec, int maxCompared)
-	: m_codec(codec), m_maxCompared(maxCompared)
+	: DescriptorIndex(codec), m_maxCompared(maxCompared)
 {
 }
 
 BestBinFirstDescriptorIndex::~BestBinFirstDescriptorIndex() = default;
 
-void BestBinFirstDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
+void BestBinFirstDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& indexRows)
 {
 	Level added;
-	added.codes = m_codec.indexRows(siftDescriptors);  // the tree reads bytes as kProjectedStep x byte
+	added.codes = indexRows;  // the tree reads bytes as kProjectedStep x byte
 	added.firstRow = firstRow;
 	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	Level& last = m_levels.back();

@@ -24,7 +24,7 @@ class BestBinFirstDescriptorIndex : public DescriptorIndex
 	size_t levels() const { return m_levels.size(); }
 
    protected:
-	void doAdd(size_t firstRow, const cv::Mat& siftDescriptors) override;
+	void doAdd(size_t firstRow, const cv::Mat& indexRows) override;
 	void doSearch(const cv::Mat& queries, std::vector<TwoNearestLiveRows>& out) const override;
 	size_t doBytes() const override;
 
@@ -40,7 +40,6 @@ class BestBinFirstDescriptorIndex : public DescriptorIndex
 		cv::Mat takeCodes();
 	};
 
-	const DescriptorCodec& m_codec;
 	int m_maxCompared;
 	std::vector<Level> m_levels;  //!< oldest (largest) first
 };

@@ -21,7 +21,9 @@ void CLandmarkDatabase::rebuildIndex()
 	m_index = DescriptorIndex::create(m_options, m_searchCodec);
 	// The search codes are made from the descriptors as matched (so a
 	// rebuild from stored uint8 codes gives what insertion gave).
-	for (const auto& [id, lm] : m_landmarks) m_index->add(id, DescriptorCodec::decode(lm.descriptors));
+	std::vector<std::pair<int64_t, cv::Mat>> owned;
+	for (const auto& [id, lm] : m_landmarks) owned.emplace_back(id, lm.descriptors);
+	m_index->addStored(owned);
 }
 
 void CLandmarkDatabase::insert(VisualLandmarkModel lm)
@@ -33,6 +35,34 @@ void CLandmarkDatabase::insert(VisualLandmarkModel lm)
 	const int64_t id = lm.id;
 	const auto& stored = m_landmarks.emplace(id, std::move(lm)).first->second;
 	m_index->add(id, DescriptorCodec::decode(stored.descriptors));
+}
+
+void CLandmarkDatabase::insertStored(std::vector<VisualLandmarkModel> landmarks)
+{
+	const cv::Mat storedForm = m_codec.encode(cv::Mat::zeros(1, 128, CV_32F));
+	// Every landmark is checked and converted before any goes in.
+	for (auto& lm : landmarks)
+	{
+		if (m_landmarks.count(lm.id)) throw std::invalid_argument("landmark ID " + std::to_string(lm.id) + " exists");
+		if (lm.descriptors.rows != static_cast<int>(lm.points.size()))
+			throw std::invalid_argument("landmark " + std::to_string(lm.id) + ": one descriptor per point expected");
+		if (lm.descriptors.type() == storedForm.type() && lm.descriptors.cols == storedForm.cols) continue;
+		const cv::Mat values = DescriptorCodec::decode(lm.descriptors);
+		if (lm.descriptors.type() == CV_8S || values.cols != 128)
+			throw std::invalid_argument("landmark " + std::to_string(lm.id) + ": its descriptors are stored projected to " +
+				std::to_string(lm.descriptors.cols) + " dimensions, which cannot be converted to descriptor_storage = " +
+				m_options.descriptor_storage + " (dimensions " + std::to_string(storedForm.cols) + ")");
+		lm.descriptors = m_codec.encode(values);
+	}
+	std::vector<std::pair<int64_t, cv::Mat>> owned;
+	for (auto& lm : landmarks)
+	{
+		const int64_t id = lm.id;
+		if (!m_landmarks.emplace(id, std::move(lm)).second)
+			throw std::invalid_argument("landmark ID " + std::to_string(id) + " appears twice");
+		owned.emplace_back(id, m_landmarks.at(id).descriptors);
+	}
+	m_index->addStored(owned);
 }
 
 void CLandmarkDatabase::remove(int64_t id)

@@ -32,6 +32,13 @@ class CLandmarkDatabase
 
 	/** Adds a landmark (its ID must be new), encoding its SIFT descriptors. */
 	void insert(VisualLandmarkModel landmark);
+	/** Adds landmarks whose descriptors are stored codes (as landmarks()
+	 * hold them, e.g. from a saved map), with one index build: codes in
+	 * this database's storage are kept as they are, others re-encoded
+	 * when they decode to SIFT values (float, uint8, uint4). Throws
+	 * std::invalid_argument, before adding any, for projected codes of
+	 * another storage (they cannot be converted) or an ID that exists. */
+	void insertStored(std::vector<VisualLandmarkModel> landmarks);
 	void remove(int64_t id);
 
 	VisualLandmarkModel* find(int64_t id);

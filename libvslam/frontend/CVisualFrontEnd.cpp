@@ -1,4 +1,5 @@
 #include <libvslam/frontend/CVisualFrontEnd.h>
+#include <libvslam/frontend/LandmarkAppearance.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/models/CMotionModel.h>
 #include <mrpt/math/wrap2pi.h>
@@ -59,6 +60,36 @@ CVisualFrontEnd::CVisualFrontEnd(const TVisualFrontEndOptions& options)
 {
 }
 
+void CVisualFrontEnd::loadMap(const CVSlamMap& map, const mrpt::poses::CPose2D& worldInOdometry)
+{
+	std::map<int64_t, mrpt::poses::CPose2D> inWorld;
+	for (const auto& e : map.estimates)
+		if (e.kind == 0)
+		{
+			inWorld[e.id] = mrpt::poses::CPose2D(e.mean[0], e.mean[1], e.mean[2]);
+			m_nextId = std::max(m_nextId, e.id + 1);  // also for a map without appearances
+		}
+	const TScaleRefinementSettings settings = scaleSettings(m_options);
+	std::vector<VisualLandmarkModel> landmarks;
+	for (const auto& record : map.appearances)
+	{
+		landmarks.push_back(landmarkOf(record, m_options.scale_refinement ? &settings : nullptr));
+		// Where the map has it, not where the old run's odometry had it.
+		landmarks.back().createdAtOdometry = worldInOdometry + inWorld.at(record.id);
+	}
+	m_database.insertStored(std::move(landmarks));
+	m_nextId = std::max(m_nextId, map.nextVisualLandmarkId);
+}
+
+void CVisualFrontEnd::saveMap(CVSlamMap& map) const
+{
+	for (const auto& [id, lm] : m_database.landmarks()) map.appearances.push_back(appearanceOf(lm));
+	map.descriptorStorage = m_options.descriptor_storage;
+	map.nextVisualLandmarkId = m_nextId;
+	map.hasCamera = m_camera.has_value();
+	if (m_camera) map.camera = *m_camera;
+}
+
 CVisualFrontEnd::Output CVisualFrontEnd::process(
 	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, const std::string& what)
 {
@@ -68,10 +99,13 @@ CVisualFrontEnd::Output CVisualFrontEnd::process(
 	m_lastOdometry = odometryPose;
 	CreationView view = viewOf(obs, odometryPose, what, out);
 	const Recognitions recognized = recognize(view, obs, odometryPose, out);
-	const auto t = Clock::now();
-	collectForCreation(std::move(view), recognized, obs, odometryPose, out);
-	out.seconds.creation = since(t);
-	prune(odometryPose, recognized.ids, out);
+	if (!m_mapFixed)
+	{
+		const auto t = Clock::now();
+		collectForCreation(std::move(view), recognized, obs, odometryPose, out);
+		out.seconds.creation = since(t);
+		prune(odometryPose, recognized.ids, out);
+	}
 
 	m_total.features += out.seconds.features;
 	m_total.search += out.seconds.search;
@@ -88,6 +122,7 @@ CreationView CVisualFrontEnd::viewOf(
 	const cv::Mat pixels = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
 	if (pixels.empty()) throw std::runtime_error(what + ": the image is empty or could not be loaded");
 	const auto calibration = ImageCalibration::from(obs.cameraParams, pixels.cols, pixels.rows, m_options, what);
+	if (!m_camera) m_camera = obs.cameraParams;
 	CreationView view;
 	view.features = m_extractor.extract(pixels, calibration);
 	m_database.encode(view.features);
@@ -144,7 +179,7 @@ CVisualFrontEnd::Recognitions CVisualFrontEnd::recognize(const CreationView& vie
 		recognized.ids.push_back(c.id);
 		recognized.mostInliers = std::max(recognized.mostInliers, m->NPoints);
 		if (!reportable(*lm, *m, view.time, odometryPose)) continue;  // recognized: no new landmark here
-		if (m_options.scale_refinement) refineScale(*lm, *m, odometryPose, obs.cameraPose);
+		if (m_options.scale_refinement && !m_mapFixed) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		lm->lastReported = ReportedRecognition{view.time, odometryPose.asTPose(), m->landmarkInRobot.asTPose()};
 		out.measurements.push_back(measurementOf(*m, obs));
 	}

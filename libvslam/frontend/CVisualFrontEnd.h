@@ -20,6 +20,7 @@
 #include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
+#include <libvslam/obs/CVSlamMap.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -59,6 +60,19 @@ class CVisualFrontEnd
 	Output process(
 		const mrpt::obs::CObservationImage& image, const mrpt::poses::CPose2D& odometryPose,
 		const std::string& what);
+
+	/** Loads a saved map's visual landmarks, before the first image.
+	 * `worldInOdometry` places the map's frame in this run's odometry
+	 * frame (the inverse of the start pose), so each landmark is expected
+	 * in view where the map has it. New landmarks take IDs after the map's.
+	 * Throws std::invalid_argument if the map's descriptors cannot be used
+	 * with this configuration's descriptor storage. */
+	void loadMap(const CVSlamMap& map, const mrpt::poses::CPose2D& worldInOdometry);
+	/** Localization only: no landmark is created, pruned or rescaled. */
+	void fixMap() { m_mapFixed = true; }
+	/** Adds every landmark's appearance, the descriptor storage, the next
+	 * landmark ID and the first image's calibration to `map`. */
+	void saveMap(CVSlamMap& map) const;
 
 	const CLandmarkDatabase& database() const { return m_database; }
 	/** Totals over all images so far. */
@@ -133,6 +147,8 @@ class CVisualFrontEnd
 	 * the odometry pose each was taken at. */
 	std::deque<std::pair<CreationView, mrpt::poses::CPose2D>> m_views;
 	int64_t m_nextId = 1;
+	bool m_mapFixed = false;
+	std::optional<mrpt::img::TCamera> m_camera;  //!< the first image's calibration
 	double m_travelled = 0;  //!< odometry path length so far, m
 	std::optional<mrpt::poses::CPose2D> m_lastOdometry;
 	StageSeconds m_total;

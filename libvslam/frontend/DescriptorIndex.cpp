@@ -34,7 +34,26 @@ void DescriptorIndex::add(int64_t owner, const cv::Mat& siftDescriptors)
 	const size_t first = rows();
 	m_blocks.emplace_back(first, owner);
 	m_removed.insert(m_removed.end(), static_cast<size_t>(siftDescriptors.rows), 0);
-	doAdd(first, siftDescriptors);
+	doAdd(first, m_codec.indexRows(siftDescriptors));
+}
+
+void DescriptorIndex::addStored(const std::vector<std::pair<int64_t, cv::Mat>>& ownedCodes)
+{
+	const size_t first = rows();
+	// One landmark at a time: its index rows are small, the SIFT values of
+	// a whole map would not be.
+	std::vector<cv::Mat> blocks;
+	for (const auto& [owner, codes] : ownedCodes)
+	{
+		if (codes.rows == 0) continue;
+		m_blocks.emplace_back(rows(), owner);
+		m_removed.insert(m_removed.end(), static_cast<size_t>(codes.rows), 0);
+		blocks.push_back(m_codec.indexRows(DescriptorCodec::decode(codes)));
+	}
+	if (blocks.empty()) return;
+	cv::Mat all;
+	cv::vconcat(blocks, all);
+	doAdd(first, all);
 }
 
 void DescriptorIndex::remove(int64_t owner)

@@ -41,6 +41,8 @@ struct NearestLandmarkRows
 class DescriptorIndex
 {
    public:
+	/** An index over codes of `codec` (which must outlive it). */
+	explicit DescriptorIndex(const DescriptorCodec& codec) : m_codec(codec) {}
 	virtual ~DescriptorIndex() = default;
 
 	/** The back-end `options.search_index` names, over codes of `codec`
@@ -50,6 +52,10 @@ class DescriptorIndex
 
 	/** Adds a landmark's descriptors (N x 128 SIFT, CV_32F) as N rows. */
 	void add(int64_t owner, const cv::Mat& siftDescriptors);
+	/** Adds many landmarks at once, from their stored codes (as
+	 * DescriptorCodec::encode() gives them, decoded here one landmark at a
+	 * time): one build instead of one per landmark (a rebuild, a loaded map). */
+	void addStored(const std::vector<std::pair<int64_t, cv::Mat>>& ownedCodes);
 	/** Every row of `owner` is skipped from now on. */
 	void remove(int64_t owner);
 	/** For each row of `queries` (the codec's matching space, CV_32F). */
@@ -80,8 +86,9 @@ class DescriptorIndex
 		float m_dist[2] = {0, 0};
 	};
 
-	/** Rows firstRow.. of `siftDescriptors` (one each) were appended. */
-	virtual void doAdd(size_t firstRow, const cv::Mat& siftDescriptors) = 0;
+	/** Rows firstRow.. were appended, one per row of `indexRows` (the
+	 * codec's indexRows() of their SIFT descriptors). */
+	virtual void doAdd(size_t firstRow, const cv::Mat& indexRows) = 0;
 	/** Fills one TwoNearestLiveRows per query (constructed with removed()). */
 	virtual void doSearch(const cv::Mat& queries, std::vector<TwoNearestLiveRows>& out) const = 0;
 	virtual size_t doBytes() const = 0;
@@ -90,6 +97,7 @@ class DescriptorIndex
 	bool anyRemoved() const { return m_removedRows > 0; }
 
    private:
+	const DescriptorCodec& m_codec;
 	/** Each add()'s rows are one block of one landmark: (first row, owner),
 	 * in row order, so a row's owner costs a binary search and no memory
 	 * per row. */

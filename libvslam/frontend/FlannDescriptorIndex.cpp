@@ -20,7 +20,7 @@ constexpr int kMergeRatio = 4;
 }  // namespace
 
 FlannDescriptorIndex::FlannDescriptorIndex(const DescriptorCodec& codec, int trees, int checks)
-	: m_codec(codec), m_trees(trees), m_checks(checks)
+	: DescriptorIndex(codec), m_trees(trees), m_checks(checks)
 {
 }
 
@@ -35,10 +35,10 @@ void FlannDescriptorIndex::build(Level& level) const
 	cv::theRNG() = callers;
 }
 
-void FlannDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
+void FlannDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& indexRows)
 {
 	Level added;
-	added.codes = m_codec.indexRows(siftDescriptors);
+	added.codes = indexRows;
 	added.firstRow = firstRow;
 	appendAndMerge(m_levels, std::move(added), kMergeRatio);
 	build(m_levels.back());

@@ -31,7 +31,7 @@ class FlannDescriptorIndex : public DescriptorIndex
 	size_t levels() const { return m_levels.size(); }
 
    protected:
-	void doAdd(size_t firstRow, const cv::Mat& siftDescriptors) override;
+	void doAdd(size_t firstRow, const cv::Mat& indexRows) override;
 	void doSearch(const cv::Mat& queries, std::vector<TwoNearestLiveRows>& out) const override;
 	size_t doBytes() const override;
 
@@ -53,7 +53,6 @@ class FlannDescriptorIndex : public DescriptorIndex
 	};
 	void build(Level& level) const;
 
-	const DescriptorCodec& m_codec;
 	int m_trees;
 	int m_checks;
 	std::vector<Level> m_levels;  //!< oldest (largest) first

@@ -28,7 +28,7 @@ class ResultSet
 };
 }  // namespace
 
-KdTreeDescriptorIndex::KdTreeDescriptorIndex(const DescriptorCodec& codec, double eps) : m_codec(codec), m_eps(eps)
+KdTreeDescriptorIndex::KdTreeDescriptorIndex(const DescriptorCodec& codec, double eps) : DescriptorIndex(codec), m_eps(eps)
 {
 	m_store.bytes = codec.kind() == DescriptorCodec::Kind::Projected;
 	m_tree = std::make_unique<Tree>(static_cast<size_t>(codec.dims()), m_store, kLeafSize);
@@ -36,9 +36,9 @@ KdTreeDescriptorIndex::KdTreeDescriptorIndex(const DescriptorCodec& codec, doubl
 
 KdTreeDescriptorIndex::~KdTreeDescriptorIndex() = default;
 
-void KdTreeDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& siftDescriptors)
+void KdTreeDescriptorIndex::doAdd(size_t firstRow, const cv::Mat& indexRows)
 {
-	m_store.blocks.push_back(m_codec.encode(siftDescriptors));
+	m_store.blocks.push_back(indexRows);
 	const cv::Mat& block = m_store.blocks.back();
 	for (int r = 0; r < block.rows; r++) m_store.rows.push_back(block.ptr(r));
 	m_tree->addPoints(static_cast<uint32_t>(firstRow), static_cast<uint32_t>(m_store.rows.size() - 1));

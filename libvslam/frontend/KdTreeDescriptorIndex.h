@@ -19,7 +19,7 @@ class KdTreeDescriptorIndex : public DescriptorIndex
 	~KdTreeDescriptorIndex() override;
 
    protected:
-	void doAdd(size_t firstRow, const cv::Mat& siftDescriptors) override;
+	void doAdd(size_t firstRow, const cv::Mat& indexRows) override;
 	void doSearch(const cv::Mat& queries, std::vector<TwoNearestLiveRows>& out) const override;
 	size_t doBytes() const override;
 
@@ -45,7 +45,6 @@ class KdTreeDescriptorIndex : public DescriptorIndex
 	using Tree =
 		nanoflann::KDTreeSingleIndexDynamicAdaptor<nanoflann::L2_Simple_Adaptor<float, Store>, Store, -1, uint32_t>;
 
-	const DescriptorCodec& m_codec;
 	double m_eps;
 	Store m_store;
 	std::unique_ptr<Tree> m_tree;  // reads m_store

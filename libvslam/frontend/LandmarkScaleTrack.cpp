@@ -23,6 +23,20 @@ LandmarkScaleTrack::LandmarkScaleTrack(double creationBaseline, const TScaleRefi
 	m_weightedSum = m_fixedWeightedSum;
 }
 
+LandmarkScaleTrack LandmarkScaleTrack::resumed(const TState& state, const TScaleRefinementSettings& settings)
+{
+	const bool positive = state.information > 0 && state.weightedSum > 0 && std::isfinite(state.information) &&
+		std::isfinite(state.weightedSum);
+	if (!positive) throw std::invalid_argument("LandmarkScaleTrack: a resumed state must be positive and finite");
+	LandmarkScaleTrack track;
+	track.m_settings = settings;
+	track.m_fixedInformation = track.m_information = state.information;
+	track.m_fixedWeightedSum = track.m_weightedSum = state.weightedSum;
+	track.m_foldedUsed = track.m_used = state.pairsUsed;
+	track.m_foldedRejected = track.m_rejected = state.pairsRejected;
+	return track;
+}
+
 double LandmarkScaleTrack::scaleErrorStd() const { return 1 / std::sqrt(m_information); }
 
 double LandmarkScaleTrack::addSighting(const ScaleSighting& s)

@@ -98,6 +98,20 @@ class LandmarkScaleTrack
 	/** Pairs in the estimate, and pairs left out of it (as last judged). */
 	int pairsUsed() const { return m_used; }
 	int pairsRejected() const { return m_rejected; }
+	/** What a saved map keeps of a track: the estimate, with every pair
+	 * folded in as last judged. */
+	struct TState
+	{
+		double information = 1, weightedSum = 1;
+		int pairsUsed = 0, pairsRejected = 0;
+	};
+	TState state() const { return {m_information, m_weightedSum, m_used, m_rejected}; }
+	/** The track of a landmark loaded from a map: its estimate is the
+	 * prior, and pairs start with its next sighting (a new run's odometry
+	 * does not continue the old one's). Throws std::invalid_argument if the
+	 * state is not positive and finite. */
+	static LandmarkScaleTrack resumed(const TState& state, const TScaleRefinementSettings& settings);
+
 	/** Heap memory held (the pairs kept for judging). */
 	size_t bytes() const { return m_pairs.capacity() * sizeof(Pair); }
 

@@ -254,3 +254,32 @@ TEST(LandmarkScaleTrack, RejectsANonPositiveBaseline)
 {
 	EXPECT_THROW(LandmarkScaleTrack(0.0, TScaleRefinementSettings{}), std::invalid_argument);
 }
+
+TEST(LandmarkScaleTrack, AResumedTrackKeepsItsEstimateAndLearnsOn)
+{
+	DriveSettings d;
+	d.sightings = 20;
+	const auto first = drive(d, 3);
+	TScaleRefinementSettings settings;
+	settings.odometrySigma = d.odometrySigma;
+	auto resumed = LandmarkScaleTrack::resumed(first.track.state(), settings);
+	EXPECT_DOUBLE_EQ(resumed.scaleError(), first.track.scaleError());
+	EXPECT_DOUBLE_EQ(resumed.scaleErrorStd(), first.track.scaleErrorStd());
+	EXPECT_EQ(resumed.pairsUsed(), first.track.pairsUsed());
+	EXPECT_EQ(resumed.pairsRejected(), first.track.pairsRejected());
+	// Its first sighting anchors a new pair (other odometry): nothing moves.
+	ScaleSighting s;
+	s.cameraInLandmark = {5, 5};
+	s.stdPosition = d.visualSigma;
+	s.cameraInOdometry = {-40, 7};
+	s.travelled = 1000;
+	EXPECT_EQ(resumed.addSighting(s), 1.0);
+	EXPECT_DOUBLE_EQ(resumed.scaleError(), first.track.scaleError());
+}
+
+TEST(LandmarkScaleTrack, RejectsAResumedStateThatIsNotPositive)
+{
+	EXPECT_THROW(LandmarkScaleTrack::resumed({0.0, 1.0, 0, 0}, {}), std::invalid_argument);
+	EXPECT_THROW(LandmarkScaleTrack::resumed({1.0, -1.0, 0, 0}, {}), std::invalid_argument);
+	EXPECT_THROW(LandmarkScaleTrack::resumed({NAN, 1.0, 0, 0}, {}), std::invalid_argument);
+}

@@ -4,6 +4,7 @@
 #include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
+#include <libvslam/obs/CVSlamMap.h>
 #include <libvslam/obs/registerClasses.h>
 #include <mrpt/core/initializer.h>
 
@@ -18,4 +19,5 @@ void vslam::registerObservationClasses()
 	registerClass(CLASS_ID(vslam::CObservationVisualLandmark));
 	registerClass(CLASS_ID(vslam::CObservationLandmarkCreated));
 	registerClass(CLASS_ID(vslam::CObservationHeadingChange));
+	registerClass(CLASS_ID(vslam::CVSlamMap));
 }

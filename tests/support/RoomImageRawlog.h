@@ -24,6 +24,11 @@ struct RoomRawlogOptions
 	double odometryScale = 1.0;  //!< odometry distances times this
 	double odometryTurnScale = 1.0;  //!< odometry rotations times this
 	bool externalImages = false;
+	/** The circle driven (centred in the room) and where on it the robot starts. */
+	double radius = 1.0;  //!< m
+	double startAngle = 0;  //!< rad
+	/** Image brightness times this (another time of day). */
+	double brightness = 1.0;
 };
 
 /** Writes `rawlog` and `<rawlog stem>_groundtruth.tum`; returns the image count. */
@@ -40,12 +45,12 @@ inline int writeRoomImageRawlog(const std::string& rawlog, const RoomRawlogOptio
 	std::ofstream gt(siblingFile(rawlog, "_groundtruth.tum"));
 	gt << std::setprecision(12);
 	std::vector<ActionFramePair> steps;
-	const double radius = 1.0, step = 0.075;
+	const double radius = o.radius, step = 0.075;
 	const int frames = static_cast<int>(o.laps * 2 * M_PI * radius / step);
 	mrpt::poses::CPose2D previous;
 	for (int k = 0; k < frames; k++)
 	{
-		const double a = k * step / radius, t = 1e9 + 0.5 * k;
+		const double a = o.startAngle + k * step / radius, t = 1e9 + 0.5 * k;
 		const mrpt::poses::CPose2D robot(2.5 + radius * std::cos(a), 2.0 + radius * std::sin(a), a + M_PI / 2);
 		gt << t << " " << robot.x() << " " << robot.y() << " 0 0 0 " << std::sin(robot.phi() / 2) << " "
 		   << std::cos(robot.phi() / 2) << "\n";
@@ -67,7 +72,8 @@ inline int writeRoomImageRawlog(const std::string& rawlog, const RoomRawlogOptio
 		obs->sensorLabel = "CAMERA";
 		obs->cameraParams = cam;
 		obs->cameraPose = mount;
-		const cv::Mat img = room.render(cam, mrpt::poses::CPose3D(robot) + mount);
+		cv::Mat img = room.render(cam, mrpt::poses::CPose3D(robot) + mount);
+		if (o.brightness != 1.0) img.convertTo(img, -1, o.brightness);
 		if (o.externalImages)
 		{
 			const std::string name = "img_" + std::to_string(k) + ".png";
