@@ -54,6 +54,7 @@ printf 'vslam_particle_filter.sampleSize=50\nvslam_motion_model.sigma_T=0.1\n%%%
   cat - "$ROOT/config_ini/demo_visual.ini" > "$SEEDS/fuzz_config/with_overrides.ini"
 "$BIN/vslam" "$ROOT/config_ini/demo_visual.ini" --quiet --out "$SEEDS/demo_out" --set vslam.max_steps=600 > /dev/null
 cp "$SEEDS/demo_out/final_map.txt" "$SEEDS/fuzz_landmark_map/final_map.txt"
+cp "$SEEDS/demo_out/final_map.vslam" "$SEEDS/fuzz_landmark_map/final_map.vslam"
 MRCLAM="$ROOT/../shared/data/mrclam/MRCLAM_Dataset6"
 if [[ -d "$MRCLAM" ]]; then
   for f in Barcodes Landmark_Groundtruth Robot1_Odometry Robot1_Measurement Robot1_Groundtruth; do

@@ -180,9 +180,16 @@ bool CVSlamApp::initialize(int argc, const char** argv)
 			"': no rawlog: give it on the command line or set [vslam] rawlog_file");
 	m_groundTruthFile = resolveInput(appOptions.ground_truth_file);
 	m_priorMapFile = resolveInput(appOptions.prior_map_file);
+	const std::string configName = "configuration '" + m_configFile + "': ";
 	if (appOptions.localization_only && m_priorMapFile.empty())
-		throw ConfigError("configuration '" + m_configFile +
-			"': [vslam] localization_only = true needs [vslam] prior_map_file (the map to localize in)");
+		throw ConfigError(configName + "[vslam] localization_only = true needs [vslam] prior_map_file (the map to localize in)");
+	if (appOptions.initial_pose_unknown && m_priorMapFile.empty())
+		throw ConfigError(configName + "[vslam] initial_pose_unknown = true needs [vslam] prior_map_file (the map to find the robot in)");
+	if (appOptions.initial_pose_unknown && appOptions.initial_pose_from_ground_truth)
+		throw ConfigError(configName + "[vslam] initial_pose_unknown and initial_pose_from_ground_truth exclude each other");
+	if (appOptions.initial_pose_unknown && !filterOptions.kidnap.enabled)
+		throw ConfigError(configName + "[vslam] initial_pose_unknown = true needs [vslam_kidnap] enabled = true (its "
+			"relocalization hypothesis finds the pose)");
 	m_outputDir = outDir.empty() ? appOptions.output_dir : outDir;
 	if (m_quiet) appOptions.show_progress = false;
 	return true;
@@ -420,6 +427,13 @@ int CVSlamApp::run()
 		{
 			state->priorMap = priorMap;
 			state->filter.setPriorMap(estimatesOf(*priorMap), {}, appOptions.localization_only);
+			if (appOptions.initial_pose_unknown)
+			{
+				if (priorMap->estimates.empty())
+					throw ConfigError("[vslam] prior_map_file '" + m_priorMapFile + "' holds no landmark to find the robot by");
+				state->filter.setPoseUnknown();
+				summary.startPose.emplace();
+			}
 		}
 		processSteps(*state, reader, step, haveStep, summary);
 		state->outputs.close();
@@ -616,16 +630,23 @@ void CVSlamApp::processStep(RunState& r, const RawlogStep& step, RunSummary& sum
 	r.lastT = t;
 	const se2::Pose est = r.filter.meanPose();
 	const auto n = summary.steps;
-	r.outputs.rbpf.write(n, t, est);
-	r.outputs.tum.write(n, t, est);
-	r.outputs.odometry.write(n, t, r.odo);
-	r.outputs.odometryTum.write(n, t, r.odo);
-	r.estimated.push_back({t, est, static_cast<long>(n)});
-	r.odometry.push_back({t, r.odo, static_cast<long>(n)});
 	const auto& fr = r.filter.lastFrame();
 	const bool updated = fr.timestamp == step.timestamp && r.filter.stats().frames > 0;
-	r.outputs.smoothed.write(n, t,
-		r.controllerPose.update(stepIncrement, dt, est, updated && (fr.kidnapDeclared || fr.kidnapReverted)));
+	const se2::Pose smoothed = r.controllerPose.update(
+		stepIncrement, dt, est, updated && (fr.kidnapDeclared || fr.kidnapReverted || fr.poseFound));
+	if (summary.startPose) noteStartPose(r, t, updated && fr.poseFound, *summary.startPose);
+	if (r.filter.poseKnown())
+	{
+		r.outputs.rbpf.write(n, t, est);
+		r.outputs.tum.write(n, t, est);
+		r.outputs.smoothed.write(n, t, smoothed);
+		r.estimated.push_back({t, est, static_cast<long>(n)});
+	}
+	else
+		for (auto* path : {&r.outputs.rbpf, &r.outputs.tum, &r.outputs.smoothed}) path->writeUnknown(n, t);
+	r.outputs.odometry.write(n, t, r.odo);
+	r.outputs.odometryTum.write(n, t, r.odo);
+	r.odometry.push_back({t, r.odo, static_cast<long>(n)});
 	// The particle cloud's spread: weighted standard deviation of the
 	// position (sqrt of the covariance's trace) and of the heading.
 	const Eigen::Matrix3d cov = r.filter.poseCovariance();
@@ -636,6 +657,15 @@ void CVSlamApp::processStep(RunState& r, const RawlogStep& step, RunSummary& sum
 		r.filter.landmarkIndex().size(), updated ? fr.used : size_t(0), ms,
 		std::sqrt(std::max(0.0, cov(0, 0) + cov(1, 1))), std::sqrt(std::max(0.0, cov(2, 2))) * 180 / M_PI);
 	r.outputs.stepLog.flush();
+}
+
+void CVSlamApp::noteStartPose(const RunState& r, double t, bool foundNow, RunSummary::StartPose& start) const
+{
+	const double sinceStart = t - r.firstT;
+	if (!start.firstMappedSightingAt && r.filter.stats().measurementsWhilePoseUnknown > 0)
+		start.firstMappedSightingAt = sinceStart;
+	if (foundNow) start.foundAt = sinceStart;
+	if (!r.filter.poseKnown()) start.unknownSteps++;
 }
 
 void CVSlamApp::summarizeReader(const CRawlogReader& reader, const RunState& r, RunSummary& summary) const
@@ -680,8 +710,10 @@ void CVSlamApp::writeFinalOutputs(
 	Trajectory smoothed;  // the best particle's path
 	{
 		COutputFile f(folder.file("most_likely_path.txt"), COutputFile::Mode::Atomic);
+		const double found = summary.startPose && summary.startPose->foundAt ? r.firstT + *summary.startPose->foundAt : -1e300;
 		for (const auto& e : best.path.toVector())
 		{
+			if (!r.filter.poseKnown() || toSeconds(e.t) < found) continue;  // before the pose was found
 			smoothed.push_back({toSeconds(e.t), e.pose});
 			f.print("%.3f %.3f %.3f\n", e.pose.x, e.pose.y, e.pose.phi);
 		}

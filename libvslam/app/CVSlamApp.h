@@ -95,6 +95,8 @@ class CVSlamApp
 	void startOutputs(const RunOutputFolder& folder, RunSummary& summary) const;
 	void processSteps(RunState& r, CRawlogReader& reader, RawlogStep& step, bool haveStep, RunSummary& summary);
 	void processStep(RunState& r, const RawlogStep& step, RunSummary& summary);
+	/** Global localization's figures for the summary, after each step. */
+	void noteStartPose(const RunState& r, double t, bool foundNow, RunSummary::StartPose& start) const;
 	void summarizeReader(const CRawlogReader& reader, const RunState& r, RunSummary& summary) const;
 	void writeFinalOutputs(
 		const RunOutputFolder& folder, const RunState& r, const Trajectory& groundTruth, RunSummary& summary) const;

@@ -206,6 +206,16 @@ mrpt::containers::yaml RunSummary::toYaml(const CVSlamParticleFilter* f) const
 	y["timing"] = t;
 	y["peak_memory_MiB"] = peakMemoryMiB;
 	if (frontEnd) y["front_end"] = frontEndNode(*frontEnd);
+	if (startPose)
+	{
+		yaml p = yaml::Map();
+		const auto seconds = [](const std::optional<double>& v) { return v ? yaml(*v) : yaml(); };
+		p["steps_with_unknown_pose"] = startPose->unknownSteps;
+		p["first_mapped_landmark_measured_at_s"] = seconds(startPose->firstMappedSightingAt);
+		p["found_at_s"] = seconds(startPose->foundAt);
+		p["measurements_while_unknown"] = f->stats().measurementsWhilePoseUnknown;
+		y["unknown_start_pose"] = p;
+	}
 	if (ate || odometryAte)
 	{
 		yaml e = yaml::Map();

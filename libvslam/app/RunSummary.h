@@ -40,6 +40,16 @@ struct RunSummary
 	/** The loop-closure graph's keyframe path at the end (pose_graph_path.tum). */
 	std::optional<AteStats> poseGraphAte;
 
+	/** Global localization (initial_pose_unknown): steps before the pose
+	 * was found, when it was found and when a mapped landmark was first
+	 * measured (seconds from the first step). */
+	struct StartPose
+	{
+		uint64_t unknownSteps = 0;
+		std::optional<double> foundAt, firstMappedSightingAt;
+	};
+	std::optional<StartPose> startPose;
+
 	/** The visual front-end, when the rawlog had camera images. */
 	struct FrontEnd
 	{

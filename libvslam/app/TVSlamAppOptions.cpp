@@ -13,6 +13,7 @@ void TVSlamAppOptions::loadFromConfigFile(
 	ground_truth_file = readString(c, s, "ground_truth_file", ground_truth_file);
 	prior_map_file = readString(c, s, "prior_map_file", prior_map_file);
 	localization_only = readBool(c, s, "localization_only", localization_only);
+	initial_pose_unknown = readBool(c, s, "initial_pose_unknown", initial_pose_unknown);
 	prior_map_std_xy =
 		readDouble(c, s, "prior_map_std_xy", prior_map_std_xy, Range{0, 100, false, true});
 	prior_map_std_phi = readDegreesAsRadians(
@@ -39,6 +40,8 @@ void TVSlamAppOptions::saveToConfigFile(
 		"'id x y phi'); relative to this INI");
 	c.write(s, "localization_only", localization_only, 25, 12,
 		"Keep the prior map fixed (localize in it): no landmark is added, updated or removed");
+	c.write(s, "initial_pose_unknown", initial_pose_unknown, 25, 12,
+		"The start pose is unknown: find it in the prior map from the first recognitions of its landmarks");
 	c.write(s, "prior_map_std_xy", prior_map_std_xy, 25, 12,
 		"Position uncertainty of prior-map rows without covariance [m]");
 	c.write(s, "prior_map_std_phi_deg", prior_map_std_phi * 180 / M_PI, 25, 12,

@@ -30,6 +30,8 @@ struct TVSlamAppOptions : public mrpt::config::CLoadableOptions
 	std::string prior_map_file;
 	/** Keep the prior map fixed: no landmark is added, updated or removed. */
 	bool localization_only = false;
+	/** The start pose is unknown: find it in the prior map (global localization). */
+	bool initial_pose_unknown = false;
 	/** Uncertainty of map rows that carry no covariance. */
 	double prior_map_std_xy = 0.05;  //!< m
 	double prior_map_std_phi = 2 * M_PI / 180;  //!< rad (INI: degrees)

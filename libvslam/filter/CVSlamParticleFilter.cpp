@@ -76,6 +76,13 @@ void CVSlamParticleFilter::setPriorMap(
 	m_graph.reset();
 }
 
+void CVSlamParticleFilter::setPoseUnknown()
+{
+	if (m_index.size() == 0) throw std::logic_error("an unknown start pose needs a prior map to find it in");
+	if (!m_options.kidnap.enabled) throw std::logic_error("an unknown start pose needs the kidnap test ([vslam_kidnap] enabled)");
+	m_poseUnknown = true;
+}
+
 // --------------------------------------------------------------------------
 // Inputs
 // --------------------------------------------------------------------------
@@ -209,7 +216,9 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 		// recognition would move a correct landmark.)
 		for (const auto& k : known)
 		{
-			if (m_index.entry(k.slot).suspect)
+			if (m_poseUnknown)
+				m_stats.measurementsWhilePoseUnknown++;
+			else if (m_index.entry(k.slot).suspect)
 				toReinitialize.emplace_back(k.slot, k.m);
 			else if (k.plausibleFraction >= m_options.kidnap.explained_min_fraction)
 				used.push_back(k);
@@ -228,7 +237,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	}
 	m_odometry.reset();
 	PlacedLandmarks placed;
-	if (m_mapFixed)
+	if (m_mapFixed || m_poseUnknown)
 		m_stats.unmappedLandmarkEvents += firstSightings.size() + frame.creations.size();
 	else
 		placed = placeLandmarks(frame, firstSightings, toReinitialize);
@@ -258,7 +267,8 @@ CKidnapDetector::Verdict CVSlamParticleFilter::kidnapVerdict(mrpt::Clock::time_p
 	bestFraction = 0;
 	for (const auto& k : known)
 	{
-		evidence.push_back({k, m_index.entry(k.slot).created, k.plausibleFraction >= minFraction});
+		// An unknown pose explains nothing: every mapped landmark is evidence for the hypothesis.
+		evidence.push_back({k, m_index.entry(k.slot).created, !m_poseUnknown && k.plausibleFraction >= minFraction});
 		bestFraction = std::max(bestFraction, k.explainedFraction);
 	}
 	m_lastFrame.explainedFraction = bestFraction;
@@ -338,6 +348,15 @@ void CVSlamParticleFilter::switchToRelocalizationHypothesis(mrpt::Clock::time_po
 	}
 	const LandmarkBank leftBank = m_particles[bestParticleIndex()].d.bank;
 	moveParticlesTo(m_kidnap.hypothesis().poses());
+	if (m_poseUnknown)
+	{
+		// Found, not kidnapped: the cloud left was never a belief to return to.
+		m_kidnap.acceptHypothesis({}, {}, leftBank);
+		m_poseUnknown = false;
+		m_lastFrame.poseFound = true;
+		m_stats.dualParticlesDrawn += m_particles.size();
+		return;
+	}
 	m_kidnap.acceptHypothesis(left, leftLogW, leftBank);
 	m_stats.kidnapsDetected++;
 	m_stats.dualParticlesDrawn += m_particles.size();

@@ -53,6 +53,8 @@ struct TFilterStats
 	uint64_t duplicateCreations = 0;
 	/** With a fixed map: measurements and creations of landmarks not in it, left out. */
 	uint64_t unmappedLandmarkEvents = 0;
+	/** From an unknown start: measurements before the pose was found, left out. */
+	uint64_t measurementsWhilePoseUnknown = 0;
 	uint64_t kidnapsDetected = 0;
 	/** Declared kidnaps another landmark contradicted: the filter went back. */
 	uint64_t kidnapsReverted = 0;
@@ -82,6 +84,8 @@ struct TFrameReport
 	size_t hypothesisSupport = 0;
 	/** Kidnapping declared: the filter switched to the hypothesis. */
 	bool kidnapDeclared = false;
+	/** From an unknown start: the pose was found in this frame. */
+	bool poseFound = false;
 	/** The last kidnap was contradicted: the filter went back. */
 	bool kidnapReverted = false;
 	double dualRatio = 0;
@@ -130,6 +134,13 @@ class CVSlamParticleFilter
 		const std::vector<std::pair<LandmarkKey, LandmarkEstimate>>& map,
 		mrpt::Clock::time_point t = {}, bool fixed = false);
 	bool mapFixed() const { return m_mapFixed; }
+	/** Global localization in the prior map: the pose is unknown until the
+	 * kidnap test's relocalization hypothesis (dual particles from the
+	 * measurements of mapped landmarks) is confirmed; until then no
+	 * measurement weighs the cloud and no landmark is placed. Needs a prior
+	 * map and [vslam_kidnap] enabled (throws std::logic_error otherwise). */
+	void setPoseUnknown();
+	bool poseKnown() const { return !m_poseUnknown; }
 
 	// ---- outputs --------------------------------------------------------
 	/** Weighted mean pose (circular mean heading), composed with the
@@ -175,6 +186,7 @@ class CVSlamParticleFilter
 	CLandmarkIndex m_index;
 	COdometryAccumulator m_odometry;
 	bool m_mapFixed = false;
+	bool m_poseUnknown = false;
 	TFilterStats m_stats;
 	TFrameReport m_lastFrame;
 	std::vector<PoseGaussianProposal> m_proposalBuffer;  //!< reused per frame

@@ -34,3 +34,12 @@ void CPathFileWriter::write(size_t step, double t, const se2::Pose& p)
 	}
 	m_out.flush();
 }
+
+void CPathFileWriter::writeUnknown(size_t step, double t)
+{
+	if (m_format == Format::Tum)
+		m_out.print("# %.6f pose unknown\n", t);
+	else
+		m_out.print("%% %u %f pose unknown\n", static_cast<unsigned>(step), t);
+	m_out.flush();
+}

@@ -36,6 +36,10 @@ class CPathFileWriter
 
 	/** Appends one pose and flushes. t in UNIX seconds. */
 	void write(size_t step, double t, const se2::Pose& pose);
+	/** Marks a step whose pose is not known (global localization not yet
+	 * done) with a comment row, which TUM tools and vslam-eval skip:
+	 * "# t pose unknown" (TUM), "% step t pose unknown" (rbpf-slam). */
+	void writeUnknown(size_t step, double t);
 
    private:
 	Format m_format;

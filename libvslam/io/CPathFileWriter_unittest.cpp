@@ -36,3 +36,38 @@ TEST(CPathFileWriter, RowsAreReadableWhileTheRunIsStillGoing)
 	std::getline(in, first);
 	EXPECT_EQ(first, "0 0.000000 -0.000000 0.000000 0.000000 0.000000 0.000000 1700000000.250000");
 }
+
+TEST(CPathFileWriter, StepsWithAnUnknownPoseAreCommentRowsThePathReadersSkip)
+{
+	vslam::testing::TempDir dir;
+	{
+		CPathFileWriter rbpf(dir.file("log_estimated_path.txt"), CPathFileWriter::Format::RbpfSlam);
+		CPathFileWriter tum(dir.file("path.tum"), CPathFileWriter::Format::Tum);
+		for (int i = 0; i < 4; i++)
+		{
+			if (i >= 2)  // found at the third step
+			{
+				rbpf.write(i, 100.0 + i, {1, 2, 0});
+				tum.write(i, 100.0 + i, {1, 2, 0});
+			}
+			else
+			{
+				rbpf.writeUnknown(i, 100.0 + i);
+				tum.writeUnknown(i, 100.0 + i);
+			}
+		}
+		rbpf.close();
+		tum.close();
+	}
+	const Trajectory a = readRbpfSlamPath(dir.file("log_estimated_path.txt"));
+	const Trajectory b = readTumTrajectory(dir.file("path.tum"));
+	ASSERT_EQ(a.size(), 2u);
+	ASSERT_EQ(b.size(), 2u);
+	EXPECT_NEAR(a.front().t, 102, 1e-9);
+	EXPECT_NEAR(b.front().t, 102, 1e-9);
+	std::ifstream in(dir.file("path.tum"));
+	std::string line;
+	std::getline(in, line);  // the header
+	std::getline(in, line);
+	EXPECT_EQ(line, "# 100.000000 pose unknown");
+}

@@ -1,6 +1,6 @@
-/** Registers vslam's observation classes with MRPT's class registry when the
- * shared library is loaded, so stock MRPT tools can read rawlogs containing
- * them: LD_PRELOAD=libvslam_obs.so rawlog-edit --info -i file.rawlog */
+/** Registers vslam's observation classes and its saved map with MRPT's class
+ * registry when the shared library is loaded, so stock MRPT tools can read
+ * rawlogs containing them: LD_PRELOAD=libvslam_obs.so rawlog-edit --info -i file.rawlog */
 #include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>

@@ -11,6 +11,7 @@
 #include <tests/support/TempDir.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -27,14 +28,15 @@ namespace
 const std::string kBin = std::string(VSLAM_BINARY_DIR) + "/bin/";
 
 /** An INI for vslam on `rawlog` (100 particles, seed 1, the start from the
- * ground truth: both runs' maps share the room's frame), with `extra` keys
- * in [vslam]. */
+ * ground truth unless the start pose is unknown: both runs' maps share the
+ * room's frame), with `extra` keys in [vslam]. */
 std::string writeIni(const TempDir& dir, const std::string& name, const std::string& rawlog, const std::string& extra)
 {
 	const std::string ini = dir.file(name + ".ini");
+	const bool unknownStart = extra.find("initial_pose_unknown = true") != std::string::npos;
 	std::ofstream(ini) << "[vslam]\nrawlog_file = " << rawlog << "\nRANDOM_SEED = 1\n"
 					   << "ground_truth_file = " << vslam::siblingFile(rawlog, "_groundtruth.tum") << "\n"
-					   << "initial_pose_from_ground_truth = true\n"
+					   << "initial_pose_from_ground_truth = " << (unknownStart ? "false" : "true") << "\n"
 					   << extra << "[vslam_particle_filter]\nsampleSize = 100\n";
 	return ini;
 }
@@ -155,6 +157,29 @@ TEST_F(MapReuse, AContinuedMapKeepsItsLandmarksAndGivesNewOnesNewIds)
 		summaryValue(summary, "error_vs_ground_truth_m.dead_reckoning.mean"));
 }
 
+TEST_F(MapReuse, FromAnUnknownStartTheRobotFindsItselfInTheMap)
+{
+	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;
+	const auto r = runVslam(*dir, "unknown", dir->file("second.rawlog"),
+		"prior_map_file = " + mapFile + "\nlocalization_only = true\ninitial_pose_unknown = true\n");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const std::string summary = dir->file("unknown/run_summary.yaml");
+	const double first = summaryValue(summary, "unknown_start_pose.first_mapped_landmark_measured_at_s");
+	const double found = summaryValue(summary, "unknown_start_pose.found_at_s");
+	const double unknownSteps = summaryValue(summary, "unknown_start_pose.steps_with_unknown_pose");
+	std::printf("unknown start: first mapped landmark measured at %.1f s, found at %.1f s, ATE mean %.3f m\n", first,
+		found, summaryValue(summary, "error_vs_ground_truth_m.vslam.mean"));
+	EXPECT_LE(found - first, 10) << readFile(summary);
+	EXPECT_GE(unknownSteps, 1);
+	// Until found, the path files say so instead of giving a pose.
+	const std::string tum = readFile(dir->file("unknown/estimated_path.tum"));
+	size_t marks = 0;
+	for (size_t at = tum.find("pose unknown"); at != std::string::npos; at = tum.find("pose unknown", at + 1)) marks++;
+	EXPECT_EQ(marks, unknownSteps);
+	// From where it was found on, the path is as good as with a known start.
+	EXPECT_LT(summaryValue(summary, "error_vs_ground_truth_m.vslam.mean"), 0.1) << readFile(summary);
+}
+
 namespace
 {
 /** Runs vslam on the second rawlog with `extra` [vslam] keys; expects
@@ -183,6 +208,7 @@ TEST_F(MapReuse, AMapFileThatCannotBeUsedGivesOneClearError)
 	std::ofstream(newerFile, std::ios::binary) << newer;
 	expectError(*dir, "prior_map_file = " + newerFile + "\n", 3, {"newer.vslam", "another vslam version"});
 	expectError(*dir, "localization_only = true\n", 2, {"localization_only", "needs [vslam] prior_map_file"});
+	expectError(*dir, "initial_pose_unknown = true\n", 2, {"initial_pose_unknown", "needs [vslam] prior_map_file"});
 	// A text map has no appearances: camera images cannot be localized in it.
 	expectError(*dir, "prior_map_file = " + dir->file("map/final_map.txt") + "\nlocalization_only = true\n", 2,
 		{"final_map.txt", "no visual landmark's appearance"});

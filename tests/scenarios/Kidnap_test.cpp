@@ -71,3 +71,46 @@ TEST(Kidnap, WithoutDualParticlesTheFilterStaysLost)
 	EXPECT_LE(o.recovered, 5);
 	EXPECT_EQ(o.kidnapsDetected, 0u);
 }
+
+/** Global localization: the robot starts somewhere unknown in a mapped
+ * home (3 cm / 1 deg map error) and must find itself from the first
+ * recognitions: within 0.3 m of the truth (and staying there for 5 s) at
+ * most 10 s after it first measures a mapped landmark, in at least 19 of 20
+ * seeds, and never lock on to a wrong pose (declared found more than 1 m
+ * from the truth). */
+TEST(Kidnap, FromAnUnknownStartTheRobotFindsItselfInAtLeast19Of20Seeds)
+{
+	int found = 0, wrongLockOns = 0;
+	for (uint32_t seed = 1; seed <= 20; seed++)
+	{
+		TMeasurementSimOptions o;
+		o.seed = seed;
+		o.mapping_duration = 400;
+		o.duration = 60;
+		o.kidnap_times = {};
+		const SimulatedRun run = CMeasurementSimulator(o).run();
+		const auto map = vslam::testing::noisyPriorMap(run, 1000 + seed, 0.03, M_PI / 180);
+		const auto r =
+			vslam::testing::runScenario(run, TVSlamFilterOptions(), seed, map, vslam::testing::StartPose::Unknown);
+		const auto first = std::find(r.mappedLandmarkMeasured.begin(), r.mappedLandmarkMeasured.end(), 1);
+		const auto known = std::find(r.poseKnown.begin(), r.poseKnown.end(), 1);
+		if (first == r.mappedLandmarkMeasured.end() || known == r.poseKnown.end())
+		{
+			std::printf("unknown start, seed %2u: %s\n", seed, first == r.mappedLandmarkMeasured.end() ? "no mapped landmark measured" : "never found");
+			continue;
+		}
+		std::vector<double> times;
+		for (size_t i = 0; i < r.filterError.size(); i++) times.push_back(double(i) * o.dt);
+		const size_t firstAt = static_cast<size_t>(first - r.mappedLandmarkMeasured.begin());
+		const size_t knownAt = static_cast<size_t>(known - r.poseKnown.begin());
+		const auto recovery = recoveryTime(times, r.filterError, times[firstAt]);
+		found += recovery && *recovery <= 10;
+		wrongLockOns += r.filterError[knownAt] > 1.0;
+		std::printf("unknown start, seed %2u: first mapped landmark at %.1f s, found at %.1f s (error %.2f m), "
+					"within 0.3 m %.1f s after the first\n",
+			seed, times[firstAt], times[knownAt], r.filterError[knownAt], recovery.value_or(-1));
+	}
+	std::printf("unknown start: found %d/20, wrong lock-ons %d\n", found, wrongLockOns);
+	EXPECT_GE(found, 19);
+	EXPECT_EQ(wrongLockOns, 0);
+}

@@ -20,6 +20,9 @@ struct ScenarioResult
 	std::vector<double> filterError, odometryError;  //!< per step, metres
 	std::vector<se2::Pose> estimates;
 	std::vector<size_t> kidnapIndices;  //!< indices (into the errors) of kidnaps
+	/** Per step: the filter knew its pose, and had measured a mapped
+	 * landmark while it did not (global localization). */
+	std::vector<char> poseKnown, mappedLandmarkMeasured;
 	TFilterStats stats;
 	double rmse(const std::vector<double>& e, size_t from = 0) const
 	{
@@ -57,16 +60,25 @@ inline PriorMap noisyPriorMap(
 	return map;
 }
 
+/** How a scenario starts: at the first true pose, or (global localization
+ * in the prior map, which is then kept fixed) at an unknown one. */
+enum class StartPose
+{
+	True,
+	Unknown
+};
+
 inline ScenarioResult runScenario(
 	const SimulatedRun& run, TVSlamFilterOptions opts, uint32_t seed = 1,
-	const PriorMap& priorMap = {})
+	const PriorMap& priorMap = {}, StartPose start = StartPose::True)
 {
 	mrpt::random::getRandomGenerator().randomize(seed);
 	// The first step's motion happened before truePose[0]: start at the
 	// first true pose and skip step 0.
-	opts.pf.initialPose = run.steps.front().truePose;
+	opts.pf.initialPose = start == StartPose::True ? run.steps.front().truePose : se2::Pose{0, 0, 0};
 	CVSlamParticleFilter filter(opts);
-	if (!priorMap.empty()) filter.setPriorMap(priorMap);
+	if (!priorMap.empty()) filter.setPriorMap(priorMap, {}, start == StartPose::Unknown);
+	if (start == StartPose::Unknown) filter.setPoseUnknown();
 	mrpt::bayes::CParticleFilter pf;
 	pf.m_options = opts.pf.toMrpt();
 	ScenarioResult r;
@@ -81,6 +93,8 @@ inline ScenarioResult runScenario(
 		r.filterError.push_back(std::hypot(est.x - st.truePose.x, est.y - st.truePose.y));
 		r.odometryError.push_back(std::hypot(odo.x - st.truePose.x, odo.y - st.truePose.y));
 		if (st.kidnappedHere) r.kidnapIndices.push_back(r.filterError.size() - 1);
+		r.poseKnown.push_back(filter.poseKnown());
+		r.mappedLandmarkMeasured.push_back(filter.stats().measurementsWhilePoseUnknown > 0);
 	}
 	r.stats = filter.stats();
 	return r;
