@@ -138,6 +138,27 @@ TEST_F(MapReuse, ALocalizationRunOnAnotherPathUsesTheMapAndLeavesItAsItWas)
 		<< readFile(summary);
 }
 
+TEST_F(MapReuse, AMapBuiltWithAnotherCalibrationStillLocalizes)
+{
+	// The landmarks' points are metric, so a 400x300 camera (another focal
+	// length in pixels) recognizes what a 320x240 one mapped.
+	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;
+	vslam::testing::RoomRawlogOptions other;
+	other.odometryTurnScale = 1.05;
+	other.laps = 1;
+	other.radius = 0.8;
+	other.startAngle = 2.0;
+	other.imageWidth = 400;
+	const int images = vslam::testing::writeRoomImageRawlog(dir->file("wider.rawlog"), other);
+	const auto r = runVslam(*dir, "wider", dir->file("wider.rawlog"),
+		"prior_map_file = " + mapFile + "\nlocalization_only = true\n");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const std::string summary = dir->file("wider/run_summary.yaml");
+	EXPECT_GT(summaryValue(summary, "front_end.measurements"), images / 3) << readFile(summary);
+	EXPECT_LT(summaryValue(summary, "error_vs_ground_truth_m.vslam.mean"),
+		summaryValue(summary, "error_vs_ground_truth_m.dead_reckoning.mean"));
+}
+
 TEST_F(MapReuse, AContinuedMapKeepsItsLandmarksAndGivesNewOnesNewIds)
 {
 	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;

@@ -29,6 +29,8 @@ struct RoomRawlogOptions
 	double startAngle = 0;  //!< rad
 	/** Image brightness times this (another time of day). */
 	double brightness = 1.0;
+	/** Image width in pixels (height 3/4 of it; the same field of view). */
+	int imageWidth = 320;
 };
 
 /** Writes `rawlog` and `<rawlog stem>_groundtruth.tum`; returns the image count. */
@@ -36,9 +38,10 @@ inline int writeRoomImageRawlog(const std::string& rawlog, const RoomRawlogOptio
 {
 	RoomRenderer room(5.0, 4.0, 2.5, 42);
 	mrpt::img::TCamera cam;
-	cam.ncols = 320;
-	cam.nrows = 240;
-	cam.setIntrinsicParamsFromValues(250, 250, 160, 120);
+	const double scale = o.imageWidth / 320.0;
+	cam.ncols = o.imageWidth;
+	cam.nrows = o.imageWidth * 3 / 4;
+	cam.setIntrinsicParamsFromValues(250 * scale, 250 * scale, 160 * scale, 120 * scale);
 	const mrpt::poses::CPose3D mount(0.1, 0, 0.3, -M_PI / 2, 0, -M_PI / 2);
 	const std::string imagesDir = CRawlogReader::imagesDirectory(rawlog);
 	if (o.externalImages) std::filesystem::create_directories(imagesDir);
