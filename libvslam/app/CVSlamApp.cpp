@@ -376,26 +376,7 @@ int CVSlamApp::run()
 	// Inputs are opened and checked before the output folder is touched: a
 	// bad rawlog, ground truth or map leaves earlier outputs intact.
 	CRawlogReader reader(m_rawlogFile);
-	// A file named in the INI names its key when it cannot be read.
-	const auto naming = [](const char* key, const auto& read) {
-		try
-		{
-			return read();
-		}
-		catch (const InputError& e)
-		{
-			throw InputError(std::string("[vslam] ") + key + ": " + e.what());
-		}
-	};
-	Trajectory groundTruth;
-	if (!m_groundTruthFile.empty())
-		groundTruth = naming("ground_truth_file", [&] { return readTrajectory(m_groundTruthFile); });
-	std::shared_ptr<const CVSlamMap> priorMap;
-	if (!m_priorMapFile.empty())
-		priorMap = naming("prior_map_file", [&] {
-			return std::make_shared<const CVSlamMap>(
-				readPriorMap(m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi));
-		});
+	const auto [groundTruth, priorMap] = readInputFiles();
 	RawlogStep step;  // read before the filter exists: it may set the start
 	bool haveStep = reader.next(step);
 	if (appOptions.initial_pose_from_ground_truth) startFromGroundTruth(groundTruth, haveStep, step);
@@ -423,18 +404,7 @@ int CVSlamApp::run()
 	try
 	{
 		state = std::make_unique<RunState>(folder, filterOptions, summary.runId);
-		if (priorMap)
-		{
-			state->priorMap = priorMap;
-			state->filter.setPriorMap(estimatesOf(*priorMap), {}, appOptions.localization_only);
-			if (appOptions.initial_pose_unknown)
-			{
-				if (priorMap->estimates.empty())
-					throw ConfigError("[vslam] prior_map_file '" + m_priorMapFile + "' holds no landmark to find the robot by");
-				state->filter.setPoseUnknown();
-				summary.startPose.emplace();
-			}
-		}
+		if (priorMap) startFromPriorMap(*state, priorMap, summary);
 		processSteps(*state, reader, step, haveStep, summary);
 		state->outputs.close();
 	}
@@ -468,6 +438,41 @@ int CVSlamApp::run()
 	std::cerr << "vslam: outputs in " << m_outputDir << "/\n";
 	if (failure) std::rethrow_exception(failure);
 	return summary.status == "interrupted" ? kInterrupted : kOk;
+}
+
+CVSlamApp::InputFiles CVSlamApp::readInputFiles() const
+{
+	// A file named in the INI names its key when it cannot be read.
+	const auto naming = [](const char* key, const auto& read) {
+		try
+		{
+			return read();
+		}
+		catch (const InputError& e)
+		{
+			throw InputError(std::string("[vslam] ") + key + ": " + e.what());
+		}
+	};
+	InputFiles in;
+	if (!m_groundTruthFile.empty())
+		in.groundTruth = naming("ground_truth_file", [&] { return readTrajectory(m_groundTruthFile); });
+	if (m_priorMapFile.empty()) return in;
+	in.priorMap = naming("prior_map_file", [&] {
+		return std::make_shared<const CVSlamMap>(
+			readPriorMap(m_priorMapFile, appOptions.prior_map_std_xy, appOptions.prior_map_std_phi));
+	});
+	if (appOptions.initial_pose_unknown && in.priorMap->estimates.empty())
+		throw ConfigError("[vslam] prior_map_file '" + m_priorMapFile + "' holds no landmark to find the robot by");
+	return in;
+}
+
+void CVSlamApp::startFromPriorMap(RunState& r, std::shared_ptr<const CVSlamMap> map, RunSummary& summary) const
+{
+	r.priorMap = std::move(map);
+	r.filter.setPriorMap(estimatesOf(*r.priorMap), {}, appOptions.localization_only);
+	if (!appOptions.initial_pose_unknown) return;
+	r.filter.setPoseUnknown();
+	summary.startPose.emplace();
 }
 
 void CVSlamApp::checkImagesCanBeLocalized(const CVSlamMap* priorMap) const

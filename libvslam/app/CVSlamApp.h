@@ -82,6 +82,17 @@ class CVSlamApp
 
 	void loadConfig(const std::string& file, const std::vector<std::string>& overrides);
 	std::string resolveInput(const std::string& path) const;
+	/** The ground truth and the prior map, each read if named; throws
+	 * InputError naming the key, or ConfigError for a map that cannot serve. */
+	struct InputFiles
+	{
+		Trajectory groundTruth;
+		std::shared_ptr<const CVSlamMap> priorMap;
+	};
+	InputFiles readInputFiles() const;
+	/** The filter (and later the front-end) starts from the prior map: fixed
+	 * with localization_only, from an unknown pose with initial_pose_unknown. */
+	void startFromPriorMap(RunState& r, std::shared_ptr<const CVSlamMap> map, RunSummary& summary) const;
 	/** The front-end, with the prior map's visual landmarks (fixed with
 	 * localization_only); throws ConfigError if they cannot be used. */
 	std::unique_ptr<CVisualFrontEnd> makeFrontEnd(const CVSlamMap* priorMap) const;

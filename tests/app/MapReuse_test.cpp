@@ -86,6 +86,15 @@ class MapReuse : public ::testing::Test
 	}
 	static void TearDownTestSuite() { dir.reset(); }
 
+	/** Runs vslam as `name` on `rawlog` with the map as prior_map_file and
+	 * `keys` in [vslam]; returns its summary file ("" if it failed). */
+	static std::string runOnTheMap(const std::string& name, const std::string& rawlog, const std::string& keys)
+	{
+		const auto r = runVslam(*dir, name, dir->file(rawlog), "prior_map_file = " + mapFile + "\n" + keys);
+		EXPECT_EQ(r.exitCode, 0) << r.output;
+		return r.exitCode == 0 ? dir->file(name + "/run_summary.yaml") : "";
+	}
+
 	static std::unique_ptr<TempDir> dir;
 	static vslam::testing::CommandResult mapping;
 	static std::string mapFile;
@@ -113,10 +122,8 @@ TEST_F(MapReuse, TheMapFileHoldsEveryLandmarkWithWhatTheCameraRecognizesItBy)
 TEST_F(MapReuse, ALocalizationRunOnAnotherPathUsesTheMapAndLeavesItAsItWas)
 {
 	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;
-	const auto r = runVslam(*dir, "localize", dir->file("second.rawlog"),
-		"prior_map_file = " + mapFile + "\nlocalization_only = true\n");
-	ASSERT_EQ(r.exitCode, 0) << r.output;
-	const std::string summary = dir->file("localize/run_summary.yaml");
+	const std::string summary = runOnTheMap("localize", "second.rawlog", "localization_only = true\n");
+	ASSERT_FALSE(summary.empty());
 	EXPECT_EQ(summaryValue(summary, "front_end.landmarks_created"), 0);
 	EXPECT_NE(readFile(summary).find("map_fixed: true"), std::string::npos);
 	EXPECT_GT(summaryValue(summary, "front_end.measurements"), secondImages / 3) << readFile(summary);
@@ -150,10 +157,8 @@ TEST_F(MapReuse, AMapBuiltWithAnotherCalibrationStillLocalizes)
 	other.startAngle = 2.0;
 	other.imageWidth = 400;
 	const int images = vslam::testing::writeRoomImageRawlog(dir->file("wider.rawlog"), other);
-	const auto r = runVslam(*dir, "wider", dir->file("wider.rawlog"),
-		"prior_map_file = " + mapFile + "\nlocalization_only = true\n");
-	ASSERT_EQ(r.exitCode, 0) << r.output;
-	const std::string summary = dir->file("wider/run_summary.yaml");
+	const std::string summary = runOnTheMap("wider", "wider.rawlog", "localization_only = true\n");
+	ASSERT_FALSE(summary.empty());
 	EXPECT_GT(summaryValue(summary, "front_end.measurements"), images / 3) << readFile(summary);
 	EXPECT_LT(summaryValue(summary, "error_vs_ground_truth_m.vslam.mean"),
 		summaryValue(summary, "error_vs_ground_truth_m.dead_reckoning.mean"));
@@ -162,9 +167,8 @@ TEST_F(MapReuse, AMapBuiltWithAnotherCalibrationStillLocalizes)
 TEST_F(MapReuse, AContinuedMapKeepsItsLandmarksAndGivesNewOnesNewIds)
 {
 	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;
-	const auto r = runVslam(*dir, "continue", dir->file("second.rawlog"), "prior_map_file = " + mapFile + "\n");
-	ASSERT_EQ(r.exitCode, 0) << r.output;
-	const std::string summary = dir->file("continue/run_summary.yaml");
+	const std::string summary = runOnTheMap("continue", "second.rawlog", "");
+	ASSERT_FALSE(summary.empty());
 	EXPECT_EQ(summaryValue(summary, "landmarks.events.duplicate_creations"), 0);
 	EXPECT_NE(readFile(summary).find("map_fixed: false"), std::string::npos);
 	const auto before = vslam::readVSlamMap(mapFile), after = vslam::readVSlamMap(dir->file("continue/final_map.vslam"));
@@ -181,10 +185,9 @@ TEST_F(MapReuse, AContinuedMapKeepsItsLandmarksAndGivesNewOnesNewIds)
 TEST_F(MapReuse, FromAnUnknownStartTheRobotFindsItselfInTheMap)
 {
 	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;
-	const auto r = runVslam(*dir, "unknown", dir->file("second.rawlog"),
-		"prior_map_file = " + mapFile + "\nlocalization_only = true\ninitial_pose_unknown = true\n");
-	ASSERT_EQ(r.exitCode, 0) << r.output;
-	const std::string summary = dir->file("unknown/run_summary.yaml");
+	const std::string summary =
+		runOnTheMap("unknown", "second.rawlog", "localization_only = true\ninitial_pose_unknown = true\n");
+	ASSERT_FALSE(summary.empty());
 	const double first = summaryValue(summary, "unknown_start_pose.first_mapped_landmark_measured_at_s");
 	const double found = summaryValue(summary, "unknown_start_pose.found_at_s");
 	const double unknownSteps = summaryValue(summary, "unknown_start_pose.steps_with_unknown_pose");
