@@ -29,7 +29,17 @@ run() {
 key() { awk -v s="$2:" -v k="$3:" '$1 == s && /^[a-z]/ {in_s = 1; next} /^[a-z]/ {in_s = 0} in_s && $1 == k {print $2}' "$OUT/$1/run_summary.yaml"; }
 ate() { awk '/^error_vs_ground_truth_m:/ {e = 1} e && /^  vslam:/ {v = 1; next} e && /^  [a-z]/ {v = 0} v && $1 == "mean:" {printf "%.3f", $2; exit}' "$OUT/$1/run_summary.yaml"; }
 
-echo "| home | map run (loop) | random: no map | random: continued | random: localization only | random with people, lights, dark spell, slips: localization only | unknown start: found after [s] | within 0.3 m after [s] | error when found [m] |"
+# New landmarks of a continued map, and those of them within 0.3 m and 15 deg of
+# one of the map's (a landmark frame is the robot pose that made it: the same
+# place looked at the same way, most likely the same texture made again).
+newLandmarks() {
+  awk '!/^%/ && $2 == "pose" {if (FNR == NR) {n++; x[n] = $3; y[n] = $4; p[n] = $5; id[$1] = 1; next}
+    if ($1 in id) next; added++; for (i = 1; i <= n; i++) {d = $5 - p[i]; while (d > 3.14159) d -= 6.28319;
+      while (d < -3.14159) d += 6.28319; if (($3 - x[i])^2 + ($4 - y[i])^2 < 0.09 && d * d < 0.0685) {near++; break}}}
+    END {printf "%d (%d)", added, near}' "$1" "$2"
+}
+
+echo "| home | map run (loop) | random: no map | random: continued (new landmarks, near an old one) | random: localization only | random with people, lights, dark spell, slips: localization only | unknown start: found after [s] | within 0.3 m after [s] | error when found [m] |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for s in $SEEDS; do
   loop="$BATCH/loop/data_seed$s" random="$BATCH/random/data_seed$s" disturbed="$BATCH/random_disturbed/data_seed$s"
@@ -60,5 +70,5 @@ for s in $SEEDS; do
       if (ok && j <= n) {printf "%.1f", t[i] - start - t0; exit} } print "never"}' "$OUT/unknown_$s/error.csv")"
   atFound="$(awk -F, -v t0="$found" -v start="$start" 'NR > 1 && $1 == "estimate" && $2 - start >= t0 - 1e-6 {printf "%.2f", $3; exit}' "$OUT/unknown_$s/error.csv")"
   foundAfter="never"; [[ "$found" != "" && "$found" != "~" && "$found" != "null" ]] && foundAfter="$(awk -v a="$found" -v b="$first" 'BEGIN {printf "%.1f", a - b}')"
-  echo "| $s | $(ate "map_$s") | $(ate "none_$s") | $(ate "continued_$s") | $(ate "localized_$s") | $disturbedAte | $foundAfter | $within | ${atFound:-} |"
+  echo "| $s | $(ate "map_$s") | $(ate "none_$s") | $(ate "continued_$s") $(newLandmarks "$OUT/map_$s/final_map.txt" "$OUT/continued_$s/final_map.txt") | $(ate "localized_$s") | $disturbedAte | $foundAfter | $within | ${atFound:-} |"
 done
