@@ -472,7 +472,7 @@ void CVSlamApp::startFromPriorMap(RunState& r, std::shared_ptr<const CVSlamMap> 
 	r.filter.setPriorMap(estimatesOf(*r.priorMap), {}, appOptions.localization_only);
 	if (!appOptions.initial_pose_unknown) return;
 	r.filter.setPoseUnknown();
-	summary.startPose.emplace();
+	summary.startPose = RunSummary::StartPose();
 }
 
 void CVSlamApp::checkImagesCanBeLocalized(const CVSlamMap* priorMap) const
