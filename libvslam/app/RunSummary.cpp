@@ -127,7 +127,7 @@ yaml landmarksNode(const CVSlamParticleFilter& f)
 	e["created_at_first_sighting"] = fs.landmarksCreatedFromMeasurement;
 	e["reinitialized"] = fs.landmarksReinitialized;
 	e["duplicate_creations"] = fs.duplicateCreations;
-	e["left_out_of_fixed_map"] = fs.unmappedLandmarkEvents;
+	e["not_placed"] = fs.landmarksNotPlaced;
 	n["events"] = e;
 	n["map_fixed"] = f.mapFixed();
 	return n;

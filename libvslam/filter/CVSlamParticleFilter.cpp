@@ -238,7 +238,7 @@ void CVSlamParticleFilter::updateWithFrame(const FrameMeasurements& frame)
 	m_odometry.reset();
 	PlacedLandmarks placed;
 	if (m_mapFixed || m_poseUnknown)
-		m_stats.unmappedLandmarkEvents += firstSightings.size() + frame.creations.size();
+		m_stats.landmarksNotPlaced += firstSightings.size() + frame.creations.size();
 	else
 		placed = placeLandmarks(frame, firstSightings, toReinitialize);
 	if (m_graph) updateLoopClosureGraph(frame.timestamp, used, placed);

@@ -51,8 +51,9 @@ struct TFilterStats
 	uint64_t landmarksCreatedFromMeasurement = 0;
 	uint64_t landmarksReinitialized = 0;
 	uint64_t duplicateCreations = 0;
-	/** With a fixed map: measurements and creations of landmarks not in it, left out. */
-	uint64_t unmappedLandmarkEvents = 0;
+	/** Landmarks not placed (first sightings and creations) because the map
+	 * is fixed or the start pose not yet found. */
+	uint64_t landmarksNotPlaced = 0;
 	/** From an unknown start: measurements before the pose was found, left out. */
 	uint64_t measurementsWhilePoseUnknown = 0;
 	uint64_t kidnapsDetected = 0;
