@@ -63,15 +63,18 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 		}
 	}
 
-	std::vector<KnownMeasurement> anchoredMeasurements;
-	bool anyExplained = false;
+	std::vector<KnownMeasurement> counted;
+	bool anyExplained = false, anyAnchored = false;
 	for (const auto& e : evidence)
 	{
-		if (!anchored(e.created)) continue;
-		anchoredMeasurements.push_back(e.measurement);
+		const bool isAnchored = anchored(e.created);
+		// A young landmark explained is no evidence: it was placed from this belief.
+		if (!isAnchored && e.explained) continue;
+		counted.push_back(e.measurement);
 		anyExplained = anyExplained || e.explained;
+		anyAnchored = anyAnchored || isAnchored;
 	}
-	if (anchoredMeasurements.empty()) return Verdict::Neutral;
+	if (counted.empty()) return Verdict::Neutral;
 	if (anyExplained)
 	{
 		m_verified = t;
@@ -83,20 +86,27 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 	if (!options.enabled) return Verdict::Unexplained;
 
 	if (m_hypothesis.active() &&
-		m_hypothesis.explainedFraction(anchoredMeasurements, ctx.likelihood) >=
-			options.explained_min_fraction)
-		m_hypothesis.confirm(anchoredMeasurements, ctx.likelihood, ctx.rng);
+		m_hypothesis.explainedFraction(counted, ctx.likelihood) >= options.explained_min_fraction)
+	{
+		m_hypothesis.confirm(counted, ctx.likelihood, ctx.rng);
+		m_hypothesisAnchored = m_hypothesisAnchored || anyAnchored;
+	}
 	else
+	{
 		m_hypothesis.start(
-			anchoredMeasurements, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng,
+			counted, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng,
 			options.hypothesis_from_every_measurement ? HypothesisSeed::EveryPoseMeasurement
 													  : HypothesisSeed::MostInformative);
+		m_hypothesisAnchored = anyAnchored;
+	}
 
+	// Young landmarks are placed less surely than anchored ones: one of them
+	// alone never confirms a kidnap, two distinct ones may.
 	const auto& h = m_hypothesis;
 	const bool confirmed = h.active() &&
 		((h.support() >= options.min_unexplained_frames &&
 		  h.distinctLandmarks() >= options.min_distinct_landmarks) ||
-		 (options.single_landmark_frames > 0 &&
+		 (options.single_landmark_frames > 0 && m_hypothesisAnchored &&
 		  h.support() >= options.single_landmark_frames));
 	if (confirmed)
 	{

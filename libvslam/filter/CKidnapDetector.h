@@ -6,23 +6,27 @@
  * Evidence. A measurement is "explained" when it falls inside the
  * validation gate of particles holding at least `explained_min_fraction`
  * of the weight, under the predictive distribution (odometry noise
- * included). Only *anchored* landmarks count: those created no later than
- * the last frame in which an anchored landmark was explained (at start,
- * those of the first frame). Landmarks created since were placed from the
- * current belief, so they explain it by construction; they are neutral.
+ * included). *Anchored* landmarks count either way: those created no later
+ * than the last frame in which an anchored landmark was explained (at
+ * start, those of the first frame). Landmarks created since ("young") were
+ * placed from the current belief, so their being explained says nothing;
+ * not explained, they count against it: while the robot explores, the
+ * landmarks made since the last anchored one are often all that a robot
+ * carried back there can see.
  *
- * Test. At the first frame whose anchored measurements are all
- * unexplained, a relocalization hypothesis starts: dual particles drawn
- * from those measurements with a uniform pose prior (the paper's kidnap
- * mode), carried forward with odometry. Each later frame with unexplained
- * anchored measurements must be explained by the hypothesis, which is then
- * reweighted; otherwise the hypothesis restarts from that frame. Kidnapping
- * is declared when the hypothesis has explained `min_unexplained_frames`
- * frames over at least `min_distinct_landmarks` landmarks (or
- * `single_landmark_frames` frames of one landmark) while the filter
- * explained none. False recognitions are mutually inconsistent, so they
- * keep restarting the hypothesis instead of confirming it. Any explained
- * anchored measurement drops the hypothesis.
+ * Test. At the first frame with evidence and none of it explained, a
+ * relocalization hypothesis starts: dual particles drawn from those
+ * measurements with a uniform pose prior (the paper's kidnap mode),
+ * carried forward with odometry. Each later frame with such evidence must
+ * be explained by the hypothesis, which is then reweighted; otherwise the
+ * hypothesis restarts from that frame. Kidnapping is declared when the
+ * hypothesis has explained `min_unexplained_frames` frames over at least
+ * `min_distinct_landmarks` landmarks, or `single_landmark_frames` frames
+ * of one landmark if an anchored landmark is among its support (a young
+ * landmark is placed less surely), while the filter explained none. False
+ * recognitions are mutually inconsistent, so they keep restarting the
+ * hypothesis instead of confirming it. Any explained anchored measurement
+ * drops the hypothesis.
  *
  * Return. One landmark recognized falsely but consistently (a repeated
  * texture) confirms a hypothesis as well as a real kidnap does. So a
@@ -109,7 +113,8 @@ class CKidnapDetector
 		mrpt::Clock::time_point t, const std::vector<Evidence>& evidence,
 		const Context& ctx);
 
-	/** Whether a landmark created at `created` counts as evidence. */
+	/** Whether a landmark created at `created` counts as evidence whether
+	 * or not it is explained (a young one counts only when unexplained). */
 	bool anchored(mrpt::Clock::time_point created) const
 	{
 		return m_verified && created <= *m_verified;
@@ -133,6 +138,7 @@ class CKidnapDetector
 	bool m_localized = true;
 	uint64_t m_detections = 0;
 	CRelocalizationHypothesis m_hypothesis;
+	bool m_hypothesisAnchored = false;  //!< an anchored landmark supports it
 	CRelocalizationHypothesis m_return;
 	/** What the return test may use: landmarks anchored when the kidnap was
 	 * declared, other than those that confirmed it. */

@@ -54,14 +54,20 @@ class KidnapDetectorTest : public ::testing::Test
 };
 }  // namespace
 
-TEST_F(KidnapDetectorTest, FirstFrameAnchorsAndYoungLandmarksAreNeutral)
+TEST_F(KidnapDetectorTest, FirstFrameAnchorsAndYoungLandmarksCountOnlyAgainstTheBelief)
 {
 	CKidnapDetector d;
 	EXPECT_EQ(feed(d, 0, {}), V::Neutral);
 	EXPECT_TRUE(d.anchored(at(0)));
 	EXPECT_FALSE(d.anchored(at(1)));
-	// A young landmark's unexplained measurement is no evidence.
-	EXPECT_EQ(feed(d, 2, {seen(0, se2::between(kTrue, kL1), false, at(1))}), V::Neutral);
+	// A young landmark explained is no evidence: it was placed from this belief.
+	EXPECT_EQ(feed(d, 1.5, {seen(0, se2::between(kTrue, kL1), true, at(1))}), V::Neutral);
+	EXPECT_TRUE(d.localized());
+	EXPECT_FALSE(d.anchored(at(1)));
+	// Not explained, it contradicts the belief: a hypothesis starts from it.
+	EXPECT_EQ(feed(d, 2, {seen(0, se2::between(kTrue, kL1), false, at(1))}), V::Unexplained);
+	EXPECT_FALSE(d.localized());
+	EXPECT_EQ(d.hypothesis().support(), 1u);
 	// An anchored landmark explained: everything older becomes anchored.
 	EXPECT_EQ(feed(d, 3, {seen(0, se2::between(kTrue, kL1), true, at(0))}), V::Localized);
 	EXPECT_TRUE(d.anchored(at(2.5)));
@@ -112,6 +118,18 @@ TEST_F(KidnapDetectorTest, OneLandmarkNeedsMoreFrames)
 	for (int f = 1; f < 6; f++)
 		EXPECT_EQ(feed(d, f, {seen(0, z1, false, at(0))}), V::Unexplained) << f;
 	EXPECT_EQ(feed(d, 6, {seen(0, z1, false, at(0))}), V::Kidnapped);
+}
+
+TEST_F(KidnapDetectorTest, OneYoungLandmarkAloneNeverConfirmsTwoDo)
+{
+	CKidnapDetector d;
+	feed(d, 0, {});
+	const auto z1 = se2::between(kTrue, kL1), z2 = se2::between(kTrue, kL2);
+	// Landmarks created after the last anchored explanation (at 0.5 s).
+	for (int f = 1; f <= 12; f++)
+		EXPECT_EQ(feed(d, f, {seen(0, z1, false, at(0.5))}), V::Unexplained) << f;
+	EXPECT_EQ(d.hypothesis().support(), 12u);
+	EXPECT_EQ(feed(d, 13, {seen(1, z2, false, at(0.5))}), V::Kidnapped);
 }
 
 TEST_F(KidnapDetectorTest, AnExplainedAnchoredMeasurementDropsTheHypothesis)

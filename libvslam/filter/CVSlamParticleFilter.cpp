@@ -267,6 +267,9 @@ CKidnapDetector::Verdict CVSlamParticleFilter::kidnapVerdict(mrpt::Clock::time_p
 	bestFraction = 0;
 	for (const auto& k : known)
 	{
+		// A landmark placed while the robot was lost is placed again from this
+		// measurement, not weighed against the belief it contradicts.
+		if (m_index.entry(k.slot).suspect) continue;
 		// An unknown pose explains nothing: every mapped landmark is evidence for the hypothesis.
 		evidence.push_back({k, m_index.entry(k.slot).created, !m_poseUnknown && k.plausibleFraction >= minFraction});
 		bestFraction = std::max(bestFraction, k.explainedFraction);

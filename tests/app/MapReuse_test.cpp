@@ -177,7 +177,10 @@ TEST_F(MapReuse, AContinuedMapKeepsItsLandmarksAndGivesNewOnesNewIds)
 	const double created = summaryValue(summary, "front_end.landmarks_created");
 	EXPECT_EQ(now.size(), old.size() + created);
 	for (int64_t id : now)
-		if (!old.count(id)) EXPECT_GE(id, before.nextVisualLandmarkId);
+		if (!old.count(id))
+		{
+			EXPECT_GE(id, before.nextVisualLandmarkId);
+		}
 	EXPECT_LT(summaryValue(summary, "error_vs_ground_truth_m.vslam.mean"),
 		summaryValue(summary, "error_vs_ground_truth_m.dead_reckoning.mean"));
 }
