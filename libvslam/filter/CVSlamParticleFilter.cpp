@@ -269,9 +269,10 @@ CKidnapDetector::Verdict CVSlamParticleFilter::kidnapVerdict(mrpt::Clock::time_p
 	{
 		// A landmark placed while the robot was lost is placed again from this
 		// measurement, not weighed against the belief it contradicts.
-		if (m_index.entry(k.slot).suspect) continue;
+		const auto& entry = m_index.entry(k.slot);
+		if (entry.suspect) continue;
 		// An unknown pose explains nothing: every mapped landmark is evidence for the hypothesis.
-		evidence.push_back({k, m_index.entry(k.slot).created, !m_poseUnknown && k.plausibleFraction >= minFraction});
+		evidence.push_back({k, entry.created, !m_poseUnknown && k.plausibleFraction >= minFraction});
 		bestFraction = std::max(bestFraction, k.explainedFraction);
 	}
 	m_lastFrame.explainedFraction = bestFraction;
