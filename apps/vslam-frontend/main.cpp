@@ -43,14 +43,14 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/HeadingChangeAccuracy.h>
 #include <libvslam/eval/LandmarkScaleOracle.h>
-#include <libvslam/eval/MeasurementAccuracy.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
+#include <libvslam/io/CRawlogReader.h>
 #include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
-#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/tools/MeasurementAccuracy.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/obs/registerClasses.h>

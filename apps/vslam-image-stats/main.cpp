@@ -9,8 +9,8 @@
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/Overrides.h>
-#include <libvslam/eval/ImageSequenceStats.h>
 #include <libvslam/obs/registerClasses.h>
+#include <libvslam/tools/ImageSequenceStats.h>
 
 #include <cstdio>
 #include <iostream>

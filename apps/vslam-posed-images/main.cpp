@@ -14,7 +14,7 @@
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/InputError.h>
-#include <libvslam/eval/PosedImageEvaluation.h>
+#include <libvslam/tools/PosedImageEvaluation.h>
 
 #include <filesystem>
 #include <fstream>

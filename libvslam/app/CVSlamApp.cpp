@@ -1,30 +1,31 @@
 #include <libvslam/app/CVSlamApp.h>
-#include <libvslam/app/KeyframesAlongOdometry.h>
 #include <libvslam/app/InterruptFlag.h>
+#include <libvslam/app/KeyframesAlongOdometry.h>
 #include <libvslam/app/RunMap.h>
 #include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/ConfigReference.h>
-#include <libvslam/config/StrictRead.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/AllottedCpus.h>
+#include <libvslam/core/ExceptionText.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/core/NumericalError.h>
 #include <libvslam/core/OutputError.h>
 #include <libvslam/eval/GroundTruthCheck.h>
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/filter/CVSlamParticleFilter.h>
+#include <libvslam/filter/ParticleLandmarkMap.h>
 #include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
 #include <libvslam/io/COutputFile.h>
 #include <libvslam/io/CPathFileWriter.h>
 #include <libvslam/io/CRawlogReader.h>
-#include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/LandmarkMapFile.h>
 #include <libvslam/io/RunScene.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/io/VSlamMapFile.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/bayes/CParticleFilter.h>
@@ -710,7 +711,9 @@ void CVSlamApp::writeFinalOutputs(
 {
 	// Also after an error or an interruption: what the run got to.
 	const auto& best = r.filter.particle(r.filter.bestParticleIndex());
-	writeLandmarkMap(folder.file("final_map.txt"), r.filter.landmarkIndex(), best.bank, summary.runId);
+	std::vector<uint64_t> measurements;
+	const LandmarkMap map = landmarkMapOf(r.filter.landmarkIndex(), best.bank, &measurements);
+	writeLandmarkMap(folder.file("final_map.txt"), map, measurements, summary.runId);
 	writeVSlamMap(folder.file("final_map.vslam"), mapOfRun(r.filter, r.frontEnd.get(), summary.runId));
 	Trajectory smoothed;  // the best particle's path
 	{

@@ -20,15 +20,15 @@
  * removed first; a failed write is an OutputError (exit 4).
  * main() wraps both with error reporting and exit codes.
  */
+#include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/app/RunSummary.h>
 #include <libvslam/app/TVSlamAppOptions.h>
-#include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
-#include <libvslam/eval/Trajectory.h>
-#include <libvslam/io/CRawlogReader.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/io/CRawlogReader.h>
+#include <libvslam/io/Trajectory.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <memory>

@@ -8,7 +8,7 @@
  * there is carried alone. A path at every step is what the online estimate
  * and the dead reckoning are scored on, so the three compare like for like.
  */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 
 namespace vslam
 {

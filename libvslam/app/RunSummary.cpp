@@ -1,7 +1,7 @@
 #include <libvslam/app/RunSummary.h>
+#include <libvslam/core/ExceptionText.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/COutputFile.h>
-#include <libvslam/io/ExceptionText.h>
 #include <sys/resource.h>
 
 #include <cmath>

@@ -1,8 +1,8 @@
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/core/AllottedCpus.h>
+#include <libvslam/core/ExceptionText.h>
 #include <libvslam/core/InputError.h>
-#include <libvslam/io/ExceptionText.h>
 
 #include <iostream>
 #include <stdexcept>

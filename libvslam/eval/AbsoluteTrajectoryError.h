@@ -9,8 +9,8 @@
  * and a scale, Umeyama 1991; evo's --correct_scale), which says how much
  * of the error a map built too large or too small explains (wheel odometry
  * with a scale bias builds such a map, and nothing it measures can tell). */
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/eval/TrajectoryAssociation.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <cstddef>
 

@@ -3,7 +3,7 @@
  * Whether a ground truth belongs to a run: an INI's ground_truth_file is
  * applied to whatever rawlog the command line gives, and another run's
  * truth must not pass silently as error figures. */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 
 namespace vslam
 {

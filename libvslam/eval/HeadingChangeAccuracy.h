@@ -6,7 +6,7 @@
  * (its calibration, for [vslam_heading_change] std_scale), and how much
  * better than odometry it is.
  */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <cstddef>
 #include <vector>

@@ -8,7 +8,7 @@
  * its translation (m) and rotation (rad). It measures drift per window and
  * needs no alignment. */
 #include <libvslam/eval/ErrorSummary.h>
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 
 namespace vslam
 {

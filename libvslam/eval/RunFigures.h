@@ -11,7 +11,7 @@
  * True kidnaps (jumps of the ground truth) and the kidnaps the filter
  * declared are marked on the time plots. The last three need a vslam
  * output folder (final_map.txt, log_filter_steps.txt). */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/world/FloorPlan.h>
 
 #include <string>

@@ -5,7 +5,7 @@
  * truth without timestamps (MRPT per-step pose lists), the ground-truth pose
  * of the same rawlog step. Poses without ground truth are left out. Shared
  * by the absolute and the relative error. */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <vector>
 

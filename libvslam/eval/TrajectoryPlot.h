@@ -4,7 +4,7 @@
  * walls and furniture grey, each path in its colour with a legend, jumps
  * (kidnaps) as thin lines, landmarks as arrows, a 1 m scale. Without a floor plan the view
  * fits the paths. */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/world/FloorPlan.h>
 
 #include <string>

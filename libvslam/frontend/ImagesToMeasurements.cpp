@@ -1,6 +1,6 @@
+#include <libvslam/core/ExceptionText.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
-#include <libvslam/io/ExceptionText.h>
 #include <mrpt/obs/CObservationImage.h>
 
 #include <filesystem>

@@ -1,5 +1,5 @@
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/io/CPathFileWriter.h>
+#include <libvslam/io/Trajectory.h>
 
 using namespace vslam;
 

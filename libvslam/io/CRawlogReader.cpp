@@ -1,8 +1,8 @@
 #include <libvslam/core/ActionOdometry.h>
+#include <libvslam/core/ExceptionText.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/CCheckedGzInputStream.h>
 #include <libvslam/io/CRawlogReader.h>
-#include <libvslam/io/ExceptionText.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>

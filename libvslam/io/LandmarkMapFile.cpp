@@ -94,21 +94,20 @@ LandmarkMap readLandmarkMap(
 	return map;
 }
 
-void writeLandmarkMap(const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank,
-	const std::string& runId)
+void writeLandmarkMap(const std::string& file, const LandmarkMap& map,
+	const std::vector<uint64_t>& measurements, const std::string& runId)
 {
 	COutputFile out(file, COutputFile::Mode::Atomic);
 	out.print("%% id kind x y phi var_x cov_xy cov_xphi var_y cov_yphi var_phi measurements\n");
 	if (!runId.empty()) out.print("%% vslam run %s\n", runId.c_str());
-	for (size_t slot = 0; slot < bank.size(); slot++)
+	for (size_t row = 0; row < map.size(); row++)
 	{
-		const auto& e = index.entry(slot);
-		const auto& l = bank[slot];
+		const auto& [key, l] = map[row];
 		const auto& C = l.cov;
 		out.print("%lld %s %.6f %.6f %.6f %.9g %.9g %.9g %.9g %.9g %.9g %llu\n",
-			static_cast<long long>(e.key.id), toString(e.key.kind), l.mean[0], l.mean[1],
+			static_cast<long long>(key.id), toString(key.kind), l.mean[0], l.mean[1],
 			l.mean[2], C(0, 0), C(0, 1), C(0, 2), C(1, 1), C(1, 2), C(2, 2),
-			static_cast<unsigned long long>(e.measurements));
+			static_cast<unsigned long long>(row < measurements.size() ? measurements[row] : 0));
 	}
 	out.commit();
 }

@@ -11,11 +11,10 @@
  *   id x y                          a point, e.g. mrclam2rawlog's _landmarks.txt
  *   id x y phi                      a pose
  * '%' and '#' start comment lines. */
-#include <libvslam/filter/CLandmarkIndex.h>
-#include <libvslam/filter/CVSlamParticle.h>
+#include <libvslam/models/LandmarkTypes.h>
 
+#include <cstdint>
 #include <string>
-
 #include <utility>
 #include <vector>
 
@@ -30,8 +29,10 @@ using LandmarkMap = std::vector<std::pair<LandmarkKey, LandmarkEstimate>>;
 LandmarkMap readLandmarkMap(
 	const std::string& file, double stdXY, double stdPhi, std::vector<uint64_t>* measurements = nullptr);
 
-/** Writes the map atomically (a temporary file renamed), with a comment line
- * naming the run if `runId` is given; throws OutputError. */
-void writeLandmarkMap(const std::string& file, const CLandmarkIndex& index, const LandmarkBank& bank,
-	const std::string& runId = "");
+/** Writes the map atomically (a temporary file renamed), each row with its
+ * number of measurements (\a measurements in the map's order; 0 where it is
+ * shorter), and a comment line naming the run if `runId` is given; throws
+ * OutputError. */
+void writeLandmarkMap(const std::string& file, const LandmarkMap& map,
+	const std::vector<uint64_t>& measurements, const std::string& runId = "");
 }  // namespace vslam

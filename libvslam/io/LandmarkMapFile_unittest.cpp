@@ -11,8 +11,6 @@ using vslam::testing::TempDir;
 TEST(LandmarkMapFile, WrittenMapsReadBackWithTheirCovariances)
 {
 	TempDir dir;
-	CLandmarkIndex index;
-	LandmarkBank bank;
 	LandmarkEstimate pose, point;
 	pose.kind = LandmarkKind::Pose;
 	pose.mean << 1.5, -2, 0.25;
@@ -20,12 +18,9 @@ TEST(LandmarkMapFile, WrittenMapsReadBackWithTheirCovariances)
 	point.kind = LandmarkKind::Point;
 	point.mean << 3, 4, 0;
 	point.cov.topLeftCorner<2, 2>() << 0.05, -0.01, -0.01, 0.06;
-	index.add({LandmarkKind::Pose, 7}, {});
-	bank.push_back(pose);
-	index.add({LandmarkKind::Point, 7}, {});  // same ID, other kind: another landmark
-	bank.push_back(point);
-	index.entry(0).measurements = 34;
-	writeLandmarkMap(dir.file("map.txt"), index, bank);
+	const LandmarkMap map{{{LandmarkKind::Pose, 7}, pose},
+		{{LandmarkKind::Point, 7}, point}};  // same ID, other kind: another landmark
+	writeLandmarkMap(dir.file("map.txt"), map, {34});
 
 	std::vector<uint64_t> measurements;
 	const LandmarkMap back = readLandmarkMap(dir.file("map.txt"), 1.0, 1.0, &measurements);

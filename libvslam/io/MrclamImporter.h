@@ -22,8 +22,8 @@
  * wrong heading: it ignores odometry until its map holds a landmark, and
  * some robots turn before their first detection.)
  */
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/io/RawlogWriting.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/models/CMotionModel.h>
 
 #include <cmath>

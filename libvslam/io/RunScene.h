@@ -8,7 +8,7 @@
  * estimate blue, truth green, odometry red, landmarks black, floor plan
  * grey. Written atomically.
  */
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <Eigen/Core>
 #include <string>

@@ -1,7 +1,7 @@
+#include <libvslam/core/ExceptionText.h>
 #include <libvslam/core/InputError.h>
 #include <libvslam/io/CCheckedGzInputStream.h>
 #include <libvslam/io/COutputFile.h>
-#include <libvslam/io/ExceptionText.h>
 #include <libvslam/io/VSlamMapFile.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/serialization/CArchive.h>

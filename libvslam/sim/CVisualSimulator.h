@@ -9,8 +9,8 @@
  * rendered, and the true and odometry paths. Deterministic for a seed: it
  * uses its own random generators, never the global one.
  */
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/io/RawlogWriting.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/sim/TVisualSimOptions.h>
 #include <libvslam/world/FloorPlan.h>
 #include <libvslam/world/FreeSpace.h>

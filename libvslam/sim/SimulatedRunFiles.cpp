@@ -1,7 +1,7 @@
 #include <libvslam/core/InputError.h>
-#include <libvslam/eval/Trajectory.h>
-#include <libvslam/sim/SimulatedRunFiles.h>
 #include <libvslam/io/RawlogWriting.h>
+#include <libvslam/io/Trajectory.h>
+#include <libvslam/sim/SimulatedRunFiles.h>
 
 #include <cstdio>
 

@@ -4,7 +4,7 @@
  * a chosen number of steps, sends the signal, and reads what is on disk. */
 #include <gtest/gtest.h>
 #include <libvslam/app/RunSummary.h>
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>
 

@@ -5,7 +5,7 @@
  * built binary as a user would. */
 #include <gtest/gtest.h>
 #include <libvslam/app/RunSummary.h>
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/models/SE2.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <libvslam/app/RunSummary.h>
 #include <libvslam/eval/LandmarkScaleOracle.h>
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>

@@ -2,7 +2,7 @@
  * gets every figure and the error CSV, bad arguments are one clear error. */
 #include <gtest/gtest.h>
 #include <libvslam/app/RunSummary.h>
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <opencv2/imgcodecs.hpp>
 #include <tests/support/RunCommand.h>
 #include <tests/support/TempDir.h>

@@ -7,7 +7,7 @@
  * tenth under 60). Skipped without the texture packages. */
 #include <gtest/gtest.h>
 #include <libvslam/config/IniText.h>
-#include <libvslam/eval/ImageSequenceStats.h>
+#include <libvslam/tools/ImageSequenceStats.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/RawlogWriting.h>

@@ -1,9 +1,9 @@
 #include <libvslam/core/InputError.h>
-#include <libvslam/eval/PosedImageEvaluation.h>
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
+#include <libvslam/tools/PosedImageEvaluation.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/img/TCamera.h>
 #include <mrpt/math/CMatrixFixed.h>

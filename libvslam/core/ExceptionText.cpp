@@ -1,4 +1,4 @@
-#include <libvslam/io/ExceptionText.h>
+#include <libvslam/core/ExceptionText.h>
 
 #include <sstream>
 #include <vector>

@@ -2,7 +2,7 @@
  * skipped with a message when absent). Bounds are the issue's goals where
  * they are met and otherwise the measured figures with a margin. */
 #include <gtest/gtest.h>
-#include <libvslam/eval/PosedImageEvaluation.h>
+#include <libvslam/tools/PosedImageEvaluation.h>
 #include <tests/support/SharedData.h>
 
 #include <algorithm>

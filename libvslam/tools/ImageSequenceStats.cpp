@@ -1,9 +1,9 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/Median.h>
-#include <libvslam/eval/ImageSequenceStats.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/io/CRawlogReader.h>
+#include <libvslam/tools/ImageSequenceStats.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <opencv2/calib3d.hpp>
 

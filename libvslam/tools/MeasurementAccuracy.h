@@ -12,9 +12,9 @@
  * predicted_cov_scale), also the share beyond 3 sigma of the noise it
  * actually gives the measurement: the outliers its model cannot absorb.
  */
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/filter/CMeasurementExtractor.h>
 #include <libvslam/filter/CPreFilter.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <cstdint>
 #include <map>

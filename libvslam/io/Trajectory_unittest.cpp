@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 #include <libvslam/core/InputError.h>
-#include <libvslam/eval/Trajectory.h>
+#include <libvslam/io/Trajectory.h>
 #include <tests/support/TempDir.h>
 
 #include <fstream>

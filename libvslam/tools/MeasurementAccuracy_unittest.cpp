@@ -1,5 +1,5 @@
 #include <gtest/gtest.h>
-#include <libvslam/eval/MeasurementAccuracy.h>
+#include <libvslam/tools/MeasurementAccuracy.h>
 
 #include <cmath>
 

@@ -6,8 +6,8 @@
  * pairs of images taken at least `revisitMinSeconds` apart from nearly the
  * same true pose. Used on vslam-simul's rendered rawlogs (vslam-image-stats).
  */
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <string>
 #include <vector>

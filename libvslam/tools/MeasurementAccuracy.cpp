@@ -1,5 +1,5 @@
 #include <libvslam/eval/Median.h>
-#include <libvslam/eval/MeasurementAccuracy.h>
+#include <libvslam/tools/MeasurementAccuracy.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include <libvslam/core/InputError.h>
-#include <libvslam/eval/Trajectory.h>
 #include <libvslam/io/COutputFile.h>
 #include <libvslam/io/NumericTable.h>
+#include <libvslam/io/Trajectory.h>
 
 #include <algorithm>
 #include <cmath>
