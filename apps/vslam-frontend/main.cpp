@@ -388,9 +388,7 @@ void printSummary(const vslam::CVisualFrontEnd& frontEnd, const vslam::ImagesToM
 	for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
 	std::cout << "\n";
 	std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
-			  << " degenerate, " << frontEnd.ambiguousRecognitions() << " ambiguous (recognition_ambiguity_min_gap), "
-			  << frontEnd.narrowRecognitions() << " narrow (recognition_min_spread_deg), "
-			  << frontEnd.inconsistentRecognitions() << " inconsistent with the odometry (recognition_odometry_gate_s)\n";
+			  << " degenerate, " << frontEnd.inconsistentRecognitions() << " inconsistent with the odometry (recognition_odometry_gate_s)\n";
 }
 }  // namespace
 

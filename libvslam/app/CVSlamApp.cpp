@@ -700,8 +700,6 @@ void CVSlamApp::summarizeReader(const CRawlogReader& reader, const RunState& r, 
 	e.creationAttempts = fe.creationAttempts();
 	e.creationRejections = fe.creationRejections();
 	e.poorlyConditioned = fe.poorlyConditionedRecognitions();
-	e.ambiguous = fe.ambiguousRecognitions();
-	e.narrow = fe.narrowRecognitions();
 	e.inconsistent = fe.inconsistentRecognitions();
 	summary.frontEnd = e;
 }

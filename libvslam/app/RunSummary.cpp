@@ -157,8 +157,6 @@ yaml frontEndNode(const RunSummary::FrontEnd& e)
 	n["heading_changes"] = h;
 	yaml r = yaml::Map();
 	r["poorly_conditioned"] = e.poorlyConditioned;
-	r["ambiguous"] = e.ambiguous;
-	r["narrow"] = e.narrow;
 	r["inconsistent"] = e.inconsistent;
 	n["recognitions_not_reported"] = r;
 	n["creation_attempts"] = e.creationAttempts;

@@ -60,10 +60,9 @@ struct RunSummary
 		double bytesPerLandmark = 0, indexBytes = 0;
 		size_t creationAttempts = 0;
 		std::map<std::string, size_t> creationRejections;  //!< by reason
-		/** Recognitions not reported: degenerate, ambiguous, narrow, and
-		 * inconsistent with the odometry (recognition_ambiguity_min_gap,
-		 * recognition_min_spread_deg, recognition_odometry_gate_s). */
-		size_t poorlyConditioned = 0, ambiguous = 0, narrow = 0, inconsistent = 0;
+		/** Recognitions not reported: degenerate, and inconsistent with the
+		 * odometry (recognition_odometry_gate_s). */
+		size_t poorlyConditioned = 0, inconsistent = 0;
 	};
 	std::optional<FrontEnd> frontEnd;
 

@@ -45,26 +45,13 @@ double totalCost(const Problem& p, double k)
 }
 }  // namespace
 
-Eigen::Matrix3d PosePrior::rotationWeight() const
-{
-	Eigen::Matrix3d W = Eigen::Matrix3d::Identity() / sigmaRotation;
-	if (sigmaYaw > 0)
-	{
-		const Eigen::Matrix3d along = yawAxis * yawAxis.transpose();
-		W = along / sigmaYaw + (Eigen::Matrix3d::Identity() - along) / sigmaRotation;
-	}
-	return W;
-}
-
 Eigen::Matrix<double, 6, 1> priorResidual(const Problem& p, const PosePrior& prior)
 {
 	const CameraPose& pose = p.poses[prior.camera];
 	const Eigen::AngleAxisd e(pose.R * prior.pose.R.transpose());
 	Eigen::Matrix<double, 6, 1> r;
 	const Eigen::Vector3d rotation = e.angle() * e.axis();
-	// Isotropic: divided, as it always was (the same digits as before).
-	r.head<3>() = prior.sigmaYaw > 0 ? Eigen::Vector3d(prior.rotationWeight() * rotation)
-									 : Eigen::Vector3d(rotation / prior.sigmaRotation);
+	r.head<3>() = rotation / prior.sigmaRotation;
 	r.tail<3>() = (pose.t - prior.pose.t) / prior.sigmaTranslation;
 	return r;
 }
@@ -72,7 +59,7 @@ Eigen::Matrix<double, 6, 1> priorResidual(const Problem& p, const PosePrior& pri
 Eigen::Matrix<double, 6, 6> priorJacobian(const Problem& p, const PosePrior& prior)
 {
 	Eigen::Matrix<double, 6, 6> J = Eigen::Matrix<double, 6, 6>::Zero();
-	J.topLeftCorner<3, 3>() = prior.rotationWeight();
+	J.topLeftCorner<3, 3>() = Eigen::Matrix3d::Identity() / prior.sigmaRotation;
 	J.bottomLeftCorner<3, 3>() = -skew(p.poses[prior.camera].t) / prior.sigmaTranslation;
 	J.bottomRightCorner<3, 3>() = Eigen::Matrix3d::Identity() / prior.sigmaTranslation;
 	return J;

@@ -33,20 +33,12 @@ struct Observation
 };
 
 /** A prior on one camera's pose (from odometry): residuals
- * W log(R R_prior^T) and (t - t_prior) / sigmaTranslation, where W is
- * I / sigmaRotation, or, with sigmaYaw > 0, 1 / sigmaYaw along yawAxis (the
- * robot's vertical in camera coordinates: its heading, measured apart) and
- * 1 / sigmaRotation across it. */
+ * log(R R_prior^T) / sigmaRotation and (t - t_prior) / sigmaTranslation. */
 struct PosePrior
 {
 	int camera = 1;
 	CameraPose pose;
 	double sigmaRotation = 1, sigmaTranslation = 1;  //!< rad, m
-	double sigmaYaw = 0;  //!< rad; 0: sigmaRotation about every axis
-	Eigen::Vector3d yawAxis = Eigen::Vector3d::UnitZ();  //!< unit
-
-	/** W above. */
-	Eigen::Matrix3d rotationWeight() const;
 };
 
 struct Problem

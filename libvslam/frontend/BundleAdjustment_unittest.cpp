@@ -123,34 +123,28 @@ TEST(BundleAdjustment, RecoversPosesAndPointsFromAPerturbedStartUpToScale)
 
 TEST(BundleAdjustment, PriorJacobianMatchesNumericalDerivativesNearThePrior)
 {
-	// Isotropic, then with a tighter heading about a tilted axis.
-	for (const double sigmaYaw : {0.0, 0.0005})
+	std::mt19937 rng(6);
+	Problem p = syntheticProblem(rng);
+	PosePrior prior;
+	prior.camera = 2;
+	Eigen::Matrix<double, 6, 1> offset;
+	offset << 0.002, -0.001, 0.003, 0.01, 0.02, -0.01;
+	prior.pose = perturbed(p.poses[2], offset);
+	prior.sigmaRotation = 0.01;
+	prior.sigmaTranslation = 0.05;
+	p.priors.push_back(prior);
+	const Eigen::Matrix<double, 6, 6> J = priorJacobian(p, prior);
+	const double h = 1e-7;
+	for (int d = 0; d < 6; d++)
 	{
-		std::mt19937 rng(6);
-		Problem p = syntheticProblem(rng);
-		PosePrior prior;
-		prior.sigmaYaw = sigmaYaw;
-		prior.yawAxis = Eigen::Vector3d(0.1, -1, 0.2).normalized();
-		prior.camera = 2;
-		Eigen::Matrix<double, 6, 1> offset;
-		offset << 0.002, -0.001, 0.003, 0.01, 0.02, -0.01;
-		prior.pose = perturbed(p.poses[2], offset);
-		prior.sigmaRotation = 0.01;
-		prior.sigmaTranslation = 0.05;
-		p.priors.push_back(prior);
-		const Eigen::Matrix<double, 6, 6> J = priorJacobian(p, prior);
-		const double h = 1e-7;
-		for (int d = 0; d < 6; d++)
-		{
-			Eigen::Matrix<double, 6, 1> delta = Eigen::Matrix<double, 6, 1>::Zero();
-			delta(d) = h;
-			Problem plus = p, minus = p;
-			plus.poses[2] = perturbed(p.poses[2], delta);
-			minus.poses[2] = perturbed(p.poses[2], -delta);
-			const Eigen::Matrix<double, 6, 1> num = (priorResidual(plus, prior) - priorResidual(minus, prior)) / (2 * h);
-			// Small-angle approximation: exact at the prior, within a few per
-			// cent of the rotation residual this close to it.
-			EXPECT_NEAR((num - J.col(d)).norm(), 0, 0.02 * (1 + num.norm())) << "dof " << d << " sigmaYaw " << sigmaYaw;
-		}
+		Eigen::Matrix<double, 6, 1> delta = Eigen::Matrix<double, 6, 1>::Zero();
+		delta(d) = h;
+		Problem plus = p, minus = p;
+		plus.poses[2] = perturbed(p.poses[2], delta);
+		minus.poses[2] = perturbed(p.poses[2], -delta);
+		const Eigen::Matrix<double, 6, 1> num = (priorResidual(plus, prior) - priorResidual(minus, prior)) / (2 * h);
+		// Small-angle approximation: exact at the prior, within a few per
+		// cent of the rotation residual this close to it.
+		EXPECT_NEAR((num - J.col(d)).norm(), 0, 0.02 * (1 + num.norm())) << "dof " << d;
 	}
 }

@@ -133,7 +133,7 @@ CreationView CVisualFrontEnd::viewOf(
 	if (m_options.heading_change)
 	{
 		t = Clock::now();
-		view.visualHeading = measureHeadingChange(obs, view.features, odometryPose, out);
+		measureHeadingChange(obs, view.features, odometryPose, out);
 		out.seconds.heading = since(t);
 	}
 	return view;
@@ -177,7 +177,6 @@ CVisualFrontEnd::Recognitions CVisualFrontEnd::recognize(const CreationView& vie
 		lm->missesInARow = 0;
 		lm->lastSeen = view.time;
 		recognized.ids.push_back(c.id);
-		recognized.mostInliers = std::max(recognized.mostInliers, m->NPoints);
 		if (!reportable(*lm, *m, view.time, odometryPose)) continue;  // recognized: no new landmark here
 		if (m_options.scale_refinement && !m_mapFixed) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		lm->lastReported = ReportedRecognition{view.time, odometryPose.asTPose(), m->landmarkInRobot.asTPose()};
@@ -193,13 +192,7 @@ bool CVisualFrontEnd::reportable(
 	// A degenerate solve measures nothing, ...
 	if (!m.covariance.allFinite())
 		m_poorlyConditioned++;
-	// ... nor one with a second pose that explains the image almost as well, ...
-	else if (m.ambiguityGap < m_options.recognition_ambiguity_min_gap)
-		m_ambiguous++;
-	// ... or from inliers crowded into a thin strip of the image, ...
-	else if (m.inlierSpread < m_options.recognition_min_spread)
-		m_narrow++;
-	// ... or where the odometry since its last recognition does not put it.
+	// ... nor one where the odometry since its last recognition does not put it.
 	else if (!agreesWithOdometry(
 				 landmark.lastReported, time, odometryPose, m.landmarkInRobot, m_options.recognition_odometry_gate))
 		m_inconsistent++;
@@ -211,11 +204,8 @@ bool CVisualFrontEnd::reportable(
 void CVisualFrontEnd::collectForCreation(CreationView view, const Recognitions& recognized,
 	const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, Output& out)
 {
-	// Views along the robot's motion where no landmark is recognized, or
-	// (creation_below_inliers) none is recognized well.
-	const bool wellRecognized = !recognized.ids.empty() &&
-		(m_options.creation_below_inliers <= 0 || recognized.mostInliers >= m_options.creation_below_inliers);
-	if (wellRecognized)
+	// Views along the robot's motion where no landmark is recognized.
+	if (!recognized.ids.empty())
 	{
 		m_views.clear();
 		return;
@@ -265,11 +255,10 @@ void CVisualFrontEnd::createFromViews(
 	m_views.clear();
 }
 
-VisualHeading CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& obs,
+void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& obs,
 	const ImageFeatures& features, const mrpt::poses::CPose2D& odometryPose, Output& out)
 {
-	// Without a heading change from the previous image, a new chain starts.
-	PreviousImage current{features, odometryPose, obs.timestamp, VisualHeading{++m_headingChains, 0, 0}};
+	PreviousImage current{features, odometryPose, obs.timestamp};
 	const auto previous = m_previousImage.find(obs.sensorLabel);
 	if (previous != m_previousImage.end() && previous->second.timestamp < obs.timestamp)
 	{
@@ -292,15 +281,11 @@ VisualHeading CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservatio
 			h->sensorPoseOnRobot = obs.cameraPose;
 			out.headingChanges.push_back(h);
 			m_headingChangesMeasured++;
-			const VisualHeading& before = previous->second.heading;
-			current.heading = {before.chain, before.heading + e->dphi, before.variance + e->stdDphi * e->stdDphi};
 		}
 		else
 			m_headingChangesFailed++;
 	}
-	const VisualHeading heading = current.heading;
 	m_previousImage[obs.sensorLabel] = std::move(current);
-	return heading;
 }
 
 void CVisualFrontEnd::refineScale(VisualLandmarkModel& lm, VisualMeasurement& m,

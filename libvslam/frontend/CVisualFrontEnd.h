@@ -80,11 +80,6 @@ class CVisualFrontEnd
 	size_t imagesProcessed() const { return m_images; }
 	/** Recognitions dropped for a degenerate pose solve (no uncertainty). */
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
-	/** Recognitions dropped for recognition_ambiguity_min_gap. */
-	size_t ambiguousRecognitions() const { return m_ambiguous; }
-	/** Recognitions not reported because their inliers spread too little
-	 * (recognition_min_spread_deg). */
-	size_t narrowRecognitions() const { return m_narrow; }
 	/** Recognitions not reported because the odometry since the landmark's
 	 * last one does not put it there (recognition_odometry_gate_s). */
 	size_t inconsistentRecognitions() const { return m_inconsistent; }
@@ -97,23 +92,22 @@ class CVisualFrontEnd
 	size_t headingChangesFailed() const { return m_headingChangesFailed; }
 
    private:
-	/** This image's features (encoded for the database), camera pose and,
-	 * with heading_change, its heading along the chain of measured changes. */
+	/** This image's features (encoded for the database) and camera pose;
+	 * with heading_change, also the heading change from the previous image. */
 	CreationView viewOf(const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose,
 		const std::string& what, Output& out);
-	/** The landmarks recognized in the image (IDs) and the most inliers of
-	 * one; the recognitions fit to report are added to out.measurements. */
+	/** The landmarks recognized in the image (IDs); the recognitions fit to
+	 * report are added to out.measurements. */
 	struct Recognitions
 	{
 		std::vector<int64_t> ids;
-		int mostInliers = 0;
 	};
 	Recognitions recognize(const CreationView& view, const mrpt::obs::CObservationImage& obs,
 		const mrpt::poses::CPose2D& odometryPose, Output& out);
 	/** Whether a recognition is reported; counts the reason when it is not. */
 	bool reportable(const VisualLandmarkModel& landmark, const VisualMeasurement& m, double time,
 		const mrpt::poses::CPose2D& odometryPose);
-	/** Keeps the view for creation when no landmark is recognized (well),
+	/** Keeps the view for creation when no landmark is recognized,
 	 * and builds a landmark once there are creation_views along the motion. */
 	void collectForCreation(CreationView view, const Recognitions& recognized, const mrpt::obs::CObservationImage& obs,
 		const mrpt::poses::CPose2D& odometryPose, Output& out);
@@ -126,9 +120,8 @@ class CVisualFrontEnd
 		const mrpt::poses::CPose3D& mount);
 	void prune(const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out);
 	/** The heading change from the camera's previous image to this one, if
-	 * one fits; this image becomes the camera's previous one. Returns this
-	 * image's heading along the chain of measured changes. */
-	VisualHeading measureHeadingChange(const mrpt::obs::CObservationImage& obs,
+	 * one fits; this image becomes the camera's previous one. */
+	void measureHeadingChange(const mrpt::obs::CObservationImage& obs,
 		const ImageFeatures& features, const mrpt::poses::CPose2D& odometryPose, Output& out);
 
 	/** The last image of a camera, for the next heading change. */
@@ -137,7 +130,6 @@ class CVisualFrontEnd
 		ImageFeatures features;
 		mrpt::poses::CPose2D odometryPose;
 		mrpt::Clock::time_point timestamp;
-		VisualHeading heading;
 	};
 
 	TVisualFrontEndOptions m_options;
@@ -154,13 +146,10 @@ class CVisualFrontEnd
 	StageSeconds m_total;
 	size_t m_images = 0;
 	size_t m_poorlyConditioned = 0;
-	size_t m_ambiguous = 0;
-	size_t m_narrow = 0;
 	size_t m_inconsistent = 0;
 	size_t m_creationAttempts = 0;
 	std::map<std::string, size_t> m_creationRejections;
 	std::map<std::string, PreviousImage> m_previousImage;  //!< by sensor label
 	size_t m_headingChangesMeasured = 0, m_headingChangesFailed = 0;
-	uint64_t m_headingChains = 0;
 };
 }  // namespace vslam

@@ -25,8 +25,7 @@ struct LapsResult
 	std::vector<double> translationErrors, headingErrors;
 	std::vector<std::string> rows;  //!< every output, for determinism
 	size_t landmarksInDatabase = 0, pruned = 0;
-	size_t narrow = 0;  //!< recognitions not reported for recognition_min_spread_deg
-	size_t inconsistent = 0;  //!< ... for recognition_odometry_gate_s
+	size_t inconsistent = 0;  //!< recognitions not reported for recognition_odometry_gate_s
 	/** Per landmark, measured over true range of each measurement from
 	 * beyond 0.5 m in the last lap: how far off the landmark's scale is. */
 	std::map<int64_t, std::vector<double>> rangeRatiosLastLap;
@@ -93,7 +92,6 @@ LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double 
 		}
 	}
 	run.landmarksInDatabase = fe.database().size();
-	run.narrow = fe.narrowRecognitions();
 	run.inconsistent = fe.inconsistentRecognitions();
 	return run;
 }
@@ -160,42 +158,6 @@ TEST(CVisualFrontEnd, LaterSightingsCorrectTheScaleOfLandmarksBuiltOnNoisyOdomet
 			  << medianScaleError(refined) << "\n";
 	EXPECT_LT(medianScaleError(refined), 0.6 * medianScaleError(asBuilt));
 	EXPECT_LT(medianScaleError(refined), 0.045);  // measured 0.029 (as built 0.095)
-}
-
-TEST(CVisualFrontEnd, CreationBelowInliersBuildsLandmarksWhileOthersAreStillRecognized)
-{
-	// By the paper's rule a landmark is built only where nothing is
-	// recognized, so the second lap, which recognizes the first lap's
-	// landmarks, builds none. With a bar above any recognition's inliers,
-	// views are collected and landmarks built on the second lap as well,
-	// and the measurements stay as accurate.
-	TVisualFrontEndOptions o;
-	const LapsResult paper = driveLaps(o, 2);
-	o.creation_below_inliers = 100000;
-	const LapsResult always = driveLaps(o, 2);
-	EXPECT_GT(always.created, paper.created + 2);
-	EXPECT_GE(always.translationErrors.size(), paper.translationErrors.size() / 2);
-	EXPECT_LT(median(always.translationErrors), 0.03);
-	EXPECT_LT(median(always.headingErrors), 0.5 * kDeg);
-}
-
-TEST(CVisualFrontEnd, ANarrowRecognitionCountsAsRecognizedButIsNotReported)
-{
-	// A spread no image can reach: every recognition of the second lap is
-	// dropped and counted, and none of them is taken for an unknown place
-	// (no landmark is built there); a small one drops none.
-	TVisualFrontEndOptions o;
-	const LapsResult paper = driveLaps(o, 2);
-	o.recognition_min_spread = 0.5;  // rad, about 29 deg
-	const LapsResult none = driveLaps(o, 2);
-	EXPECT_TRUE(none.translationErrors.empty());
-	EXPECT_GE(none.narrow, paper.translationErrors.size());
-	EXPECT_EQ(none.created, paper.created);
-	o.recognition_min_spread = 0.1 * kDeg;
-	const LapsResult all = driveLaps(o, 2);
-	EXPECT_EQ(all.narrow, 0u);
-	EXPECT_EQ(all.rows, paper.rows);
-	EXPECT_EQ(paper.narrow, 0u);
 }
 
 /** The measurement rows ("M k ...") of images k in [from, to). */

@@ -2,7 +2,6 @@
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/StructureUncertainty.h>
-#include <mrpt/math/wrap2pi.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/eigen.hpp>
 
@@ -77,78 +76,6 @@ double rotationAngle(const Eigen::Matrix3d& R)
 	return std::acos(std::clamp((R.trace() - 1) / 2, -1.0, 1.0));
 }
 
-/** View v's camera with its heading relative to the newest view taken
- * from the heading changes measured between images (VisualHeading), and
- * the std of that heading, if both views are on one chain and it agrees
- * with odometry within 3 sigma (odometry's std: sigmaOdometry). */
-struct HeadingFromImages
-{
-	mrpt::poses::CPose3D camera;
-	double std = 0;  //!< rad
-	Eigen::Vector3d axis;  //!< the robot's vertical in camera coordinates
-};
-
-std::optional<HeadingFromImages> visualHeadingBetween(const CreationView& view,
-	const CreationView& newest, const mrpt::poses::CPose3D& mount, double sigmaOdometry)
-{
-	const auto& a = view.visualHeading;
-	const auto& b = newest.visualHeading;
-	if (!a || !b || a->chain != b->chain) return std::nullopt;
-	// Floor: a std of zero (the same image twice) would make the prior singular.
-	constexpr double kMinStd = 1e-5;
-	const double std = std::max(kMinStd, std::sqrt(std::abs(b->variance - a->variance)));
-	const double yaw = mrpt::math::wrapToPi(a->heading - b->heading);
-	const mrpt::poses::CPose3D toRobot = -mount;  // the inverse pose
-	const mrpt::poses::CPose3D robotNewest = newest.cameraPose + toRobot;
-	const mrpt::poses::CPose3D relative = (view.cameraPose + toRobot) - robotNewest;
-	if (std::abs(mrpt::math::wrapToPi(relative.yaw() - yaw)) >
-		3 * std::sqrt(std * std + sigmaOdometry * sigmaOdometry))
-		return std::nullopt;
-	const mrpt::poses::CPose3D corrected(
-		relative.x(), relative.y(), relative.z(), yaw, relative.pitch(), relative.roll());
-	HeadingFromImages out;
-	out.camera = robotNewest + corrected + mount;
-	out.std = std;
-	out.axis = mount.getRotationMatrix().asEigen().transpose() * Eigen::Vector3d::UnitZ();
-	return out;
-}
-
-/** Which features of the newest view (rows of `newest`) may match which
- * of view v: those within `bandPx` of the epipolar line the odometry's
- * relative pose (X_v = R X_newest + t) predicts. */
-MatchFilter epipolarBand(const PinholeCamera& cam, const std::vector<cv::Point2f>& newest,
-	const std::vector<cv::Point2f>& view, const ba::CameraPose& vFromNewest, double bandPx)
-{
-	const double tn = vFromNewest.t.norm();
-	if (!(tn > 0)) return [](int, int) { return true; };  // no baseline: no epipolar geometry
-	Eigen::Matrix3d tx;
-	const Eigen::Vector3d t = vFromNewest.t / tn;
-	tx << 0, -t.z(), t.y(), t.z(), 0, -t.x(), -t.y(), t.x(), 0;
-	const Eigen::Matrix3d E = tx * vFromNewest.R;
-	// Each newest feature's line in view v, normalized so that l . (x, y, 1)
-	// is the distance in pixels (at the mean focal length).
-	const double f = (cam.fx + cam.fy) / 2;
-	std::vector<Eigen::Vector3d> lines;
-	lines.reserve(newest.size());
-	for (const auto& px : newest)
-	{
-		const cv::Point3d r = cam.ray(px);
-		const Eigen::Vector3d l = E * Eigen::Vector3d(r.x, r.y, r.z);
-		const double n = std::hypot(l.x(), l.y());
-		lines.push_back(n > 0 ? Eigen::Vector3d(f * l / n) : Eigen::Vector3d::Zero());
-	}
-	std::vector<Eigen::Vector3d> rays;
-	rays.reserve(view.size());
-	for (const auto& px : view)
-	{
-		const cv::Point3d r = cam.ray(px);
-		rays.emplace_back(r.x, r.y, r.z);
-	}
-	return [lines = std::move(lines), rays = std::move(rays), bandPx](int i, int j) {
-		return std::abs(lines[i].dot(rays[j])) <= bandPx;
-	};
-}
-
 /** The essential matrix between the newest and the oldest view: a better
  * relative rotation than odometry's, and the baseline direction; used
  * only when it agrees with odometry (a wrong solution is worse than none). */
@@ -178,28 +105,16 @@ bool poseFromImages(
 	for (int i = 0; i < inliers.rows; i++) inlier[i] = inliers.at<uchar>(i) != 0;
 	return true;
 }
-/** Tracks: features of the newest view matched in every other view (near
- * the odometry's epipolar lines with creation_guided_matching); each is
- * [feature in the newest, in view 0, ..., in view n-2]. */
+/** Tracks: features of the newest view matched in every other view; each
+ * is [feature in the newest, in view 0, ..., in view n-2]. */
 std::vector<std::vector<int>> matchTracks(const std::vector<const CreationView*>& views, const TVisualFrontEndOptions& o)
 {
 	const int n = static_cast<int>(views.size());
 	const CreationView& last = *views.back();
-	const PinholeCamera& cam = last.features.camera;
-	const double bandPx = 3 * (cam.fx + cam.fy) / 2 *
-			std::hypot(std::tan(o.creation_odometry_sigma_deg * M_PI / 180), o.creation_odometry_sigma_rel) +
-		3.0;
 	std::vector<std::map<int, int>> matchOf(n - 1);
 	for (int v = 0; v + 1 < n; v++)
-	{
-		const MatchFilter band = o.creation_guided_matching
-			? epipolarBand(cam, last.features.pixels, views[v]->features.pixels,
-				  relativePose(views[v]->cameraPose, last.cameraPose), bandPx)
-			: MatchFilter();
-		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors,
-				 o.match_ratio, o.creation_guided_matching ? &band : nullptr))
+		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors, o.match_ratio))
 			matchOf[v][a] = b;
-	}
 	std::vector<std::vector<int>> tracks;
 	for (const auto& [a, b0] : matchOf[0])
 	{
@@ -216,10 +131,8 @@ std::vector<std::vector<int>> matchTracks(const std::vector<const CreationView*>
 }
 
 /** The bundle adjustment problem's cameras relative to the newest, from
- * odometry, with odometry as each one's prior; the heading measured
- * between images in its place where there is one. */
-ba::Problem initialPoses(const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount,
-	const TVisualFrontEndOptions& o, CreationResult& result)
+ * odometry, with odometry as each one's prior. */
+ba::Problem initialPoses(const std::vector<const CreationView*>& views, const TVisualFrontEndOptions& o)
 {
 	const CreationView& last = *views.back();
 	ba::Problem problem;
@@ -230,16 +143,7 @@ ba::Problem initialPoses(const std::vector<const CreationView*>& views, const mr
 		ba::PosePrior prior;
 		prior.camera = static_cast<int>(v) + 1;
 		prior.sigmaRotation = o.creation_odometry_sigma_deg * M_PI / 180;
-		mrpt::poses::CPose3D camera = views[v]->cameraPose;
-		if (o.creation_visual_heading)
-			if (const auto yaw = visualHeadingBetween(*views[v], last, mount, prior.sigmaRotation))
-			{
-				camera = yaw->camera;
-				prior.sigmaYaw = yaw->std;
-				prior.yawAxis = yaw->axis;
-				result.visualHeadingViews++;
-			}
-		problem.poses.push_back(relativePose(camera, last.cameraPose));
+		problem.poses.push_back(relativePose(views[v]->cameraPose, last.cameraPose));
 		prior.pose = problem.poses.back();
 		prior.sigmaTranslation = std::max(1e-3, o.creation_odometry_sigma_rel * prior.pose.centre().norm());
 		problem.priors.push_back(prior);
@@ -249,8 +153,7 @@ ba::Problem initialPoses(const std::vector<const CreationView*>& views, const mr
 
 /** The essential matrix between the newest and the oldest view: tracks
  * that break its epipolar geometry are dropped as mismatches, and its
- * rotation replaces the odometry's unless the heading was measured between
- * images. */
+ * rotation replaces the odometry's. */
 void correctOldestPoseFromImages(const std::vector<const CreationView*>& views, ba::Problem& problem,
 	std::vector<std::vector<int>>& tracks, CreationResult& result)
 {
@@ -268,10 +171,6 @@ void correctOldestPoseFromImages(const std::vector<const CreationView*>& views, 
 	for (size_t k = 0; k < tracks.size(); k++)
 		if (inlier[k]) kept.push_back(std::move(tracks[k]));
 	tracks = std::move(kept);
-	// In forward motion the essential matrix's rotation is the less certain
-	// one (a forward drive over 30 seeds: mean worst heading error of later
-	// measurements 0.43 deg with it, 0.40 without), so a measured heading stays.
-	if (problem.priors[0].sigmaYaw > 0) return;
 	// Keep the middle views consistent: apply the same correction.
 	const Eigen::Matrix3d dR = fromImages.R * problem.poses[1].R.transpose();
 	for (size_t v = 2; v < problem.poses.size(); v++) problem.poses[v].R = dR * problem.poses[v].R;
@@ -424,7 +323,7 @@ CreationResult vslam::createLandmark(
 		result.why = "only " + std::to_string(result.tracks) + " features matched across the views";
 		return result;
 	}
-	ba::Problem problem = initialPoses(views, mount, o, result);
+	ba::Problem problem = initialPoses(views, o);
 	const double baseline = problem.poses[1].t.norm();
 	correctOldestPoseFromImages(views, problem, tracks, result);
 	std::vector<int> trackOfPoint = triangulateTracks(views, tracks, problem);

@@ -25,17 +25,6 @@
 
 namespace vslam
 {
-/** The camera's heading summed from the heading changes measured between
- * its consecutive images (HeadingChange.h), along one unbroken chain of
- * them: two views of one chain know their heading difference to the
- * precision of those measurements, far better than the odometry's. */
-struct VisualHeading
-{
-	uint64_t chain = 0;  //!< a failed heading change starts a new chain
-	double heading = 0;  //!< rad, summed since the chain began (odometry's sign)
-	double variance = 0;  //!< rad^2, of that sum
-};
-
 /** One image for landmark creation. */
 struct CreationView
 {
@@ -44,9 +33,6 @@ struct CreationView
 	 * the camera mount (camera axes: z forward, x right, y down). */
 	mrpt::poses::CPose3D cameraPose;
 	double time = 0;
-	/** With creation_visual_heading, the heading between two views of one
-	 * chain replaces the odometry's, with its own std as the prior. */
-	std::optional<VisualHeading> visualHeading;
 };
 
 struct CreationResult
@@ -56,8 +42,6 @@ struct CreationResult
 	int tracks = 0;  //!< features matched across all views
 	int inliers = 0;  //!< points kept
 	bool rotationFromImages = false;  //!< essential matrix used (else odometry only)
-	/** Views whose heading came from the heading changes between images. */
-	int visualHeadingViews = 0;
 	/** Refined pose of each view's camera (in `views` order) relative to the
 	 * newest camera: X_view = R X_newest + t; filled when built. */
 	std::vector<std::pair<Eigen::Matrix3d, Eigen::Vector3d>> refinedPoses;

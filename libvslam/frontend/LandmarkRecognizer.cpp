@@ -1,9 +1,6 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
-#include <libvslam/frontend/InlierSpread.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
-#include <libvslam/frontend/PoseAmbiguity.h>
-#include <libvslam/frontend/ProjectionMatching.h>
 #include <libvslam/frontend/RansacIterations.h>
 #include <libvslam/frontend/StructureUncertainty.h>
 #include <libvslam/frontend/WeightedPoseRefinement.h>
@@ -16,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -133,104 +129,31 @@ PoseConsensus consensusOf(const std::vector<cv::Point3f>& object, const std::vec
 }
 
 /** Refines RANSAC's pose (rvec, tvec) on its inliers and counts the inliers
- * again among all matches. With recognition_local_optimization, repeats
- * while the inlier set grows: LO-RANSAC's local optimization (Chum, Matas
- * and Kittler 2003), which recovers the consensus that pixel noise denies an
- * all-inlier minimal sample. */
+ * again among all matches. */
 PoseConsensus refineOnInliers(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels,
-	const cv::Mat& K, const TVisualFrontEndOptions& o, const std::vector<int>& ransacInliers, cv::Mat& rvec,
-	cv::Mat& tvec)
+	const cv::Mat& K, double inlierPx, const std::vector<int>& ransacInliers, cv::Mat& rvec, cv::Mat& tvec)
 {
-	constexpr int kMaxLocalSteps = 5;
-	const int steps = o.recognition_local_optimization ? kMaxLocalSteps : 1;
-	PoseConsensus best;
-	std::vector<int> current = ransacInliers;
-	for (int step = 0; step < steps && static_cast<int>(current.size()) >= kRansacSampleSize; step++)
-	{
-		cv::Mat r = rvec.clone(), t = tvec.clone();
-		cv::solvePnPRefineLM(subset(object, current), subset(pixels, current), K, cv::noArray(), r, t);
-		PoseConsensus c = consensusOf(object, pixels, K, r, t, o.recognition_ransac_px);
-		if (step > 0 && c.inliers.size() <= best.inliers.size()) break;
-		rvec = r;
-		tvec = t;
-		best = std::move(c);
-		current = best.inliers;
-	}
-	return best;
+	cv::solvePnPRefineLM(subset(object, ransacInliers), subset(pixels, ransacInliers), K, cv::noArray(), rvec, tvec);
+	return consensusOf(object, pixels, K, rvec, tvec, inlierPx);
 }
 
 /** The 2-D/3-D matches a recognition is solved from: for each, the 3-D
- * point, the pixel, and the rows of the landmark point and of the image
- * feature they come from. */
+ * point, the pixel, and the row of the landmark point it comes from. */
 struct Correspondences
 {
 	std::vector<cv::Point3f> object;
 	std::vector<cv::Point2f> pixels;
-	std::vector<int> point, feature;
+	std::vector<int> point;
 
 	void add(const VisualLandmarkModel& lm, const ImageFeatures& image, int featureRow, int pointRow)
 	{
 		object.push_back(lm.points[pointRow]);
 		pixels.push_back(image.pixels[featureRow]);
 		point.push_back(pointRow);
-		feature.push_back(featureRow);
 	}
 	size_t size() const { return object.size(); }
 };
 
-/** recognition_guided_radius_px: the landmark points the pose `fit`
- * (rvec, tvec) leaves unmatched are sought near where it projects them
- * (ProjectionMatching.h), no farther in descriptor space than the farthest
- * of fit's inliers; the pose is refined on the inliers and those matches,
- * and the inliers are counted again among all matches. */
-PoseConsensus extendByProjection(const ImageFeatures& image, const cv::Mat& query, const VisualLandmarkModel& lm,
-	const cv::Mat& landmarkDescriptors, const cv::Mat& K, const TVisualFrontEndOptions& o, Correspondences& c,
-	const PoseConsensus& fit, cv::Mat& rvec, cv::Mat& tvec)
-{
-	std::vector<bool> pointTaken(lm.points.size(), false), featureTaken(image.size(), false);
-	double farthest = 0;
-	for (int i : fit.inliers)
-	{
-		pointTaken[c.point[i]] = featureTaken[c.feature[i]] = true;
-		farthest = std::max(farthest, cv::norm(query.row(c.feature[i]), landmarkDescriptors.row(c.point[i])));
-	}
-	cv::Matx33d R;
-	cv::Rodrigues(rvec, R);
-	std::vector<bool> inFront(lm.points.size());
-	for (size_t j = 0; j < lm.points.size(); j++)  // the camera frame's depth
-	{
-		const cv::Point3f& X = lm.points[j];
-		inFront[j] = R(2, 0) * X.x + R(2, 1) * X.y + R(2, 2) * X.z + tvec.at<double>(2) > 0;
-	}
-	std::vector<cv::Point2f> projected;
-	cv::projectPoints(lm.points, rvec, tvec, K, cv::noArray(), projected);
-	const auto found = matchByProjection(projected, inFront, landmarkDescriptors, pointTaken, image.pixels, query,
-		featureTaken, {o.recognition_guided_radius_px, o.match_ratio, farthest});
-	if (found.empty()) return fit;
-	// The new set: fit's inliers, the other matches but those whose point or
-	// feature the search gave another partner, and the search's matches.
-	for (const auto& [featureRow, pointRow] : found) pointTaken[pointRow] = featureTaken[featureRow] = true;
-	Correspondences extended;
-	std::vector<bool> isInlier(c.size(), false);
-	for (int i : fit.inliers)
-	{
-		isInlier[i] = true;
-		extended.add(lm, image, c.feature[i], c.point[i]);
-	}
-	for (size_t i = 0; i < c.size(); i++)
-		if (!isInlier[i] && !pointTaken[c.point[i]] && !featureTaken[c.feature[i]])
-			extended.add(lm, image, c.feature[i], c.point[i]);
-	std::vector<int> refineOn(fit.inliers.size());
-	std::iota(refineOn.begin(), refineOn.end(), 0);
-	for (const auto& [featureRow, pointRow] : found)
-	{
-		refineOn.push_back(static_cast<int>(extended.size()));
-		extended.add(lm, image, featureRow, pointRow);
-	}
-	c = std::move(extended);
-	cv::solvePnPRefineLM(subset(c.object, refineOn), subset(c.pixels, refineOn), K, cv::noArray(), rvec, tvec);
-	return consensusOf(c.object, c.pixels, K, rvec, tvec, o.recognition_ransac_px);
-}
 /** How the measurement moves with the PnP pose, by central differences. */
 struct MeasurementJacobians
 {
@@ -266,8 +189,7 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 {
 	const cv::Mat& query = image.codes.empty() ? image.descriptors : image.codes;
 	const cv::Mat landmarkDescriptors = DescriptorCodec::decode(lm.descriptors);
-	const auto matches =
-		matchDescriptors(query, landmarkDescriptors, o.match_ratio, nullptr, o.recognition_match_both_ways);
+	const auto matches = matchDescriptors(query, landmarkDescriptors, o.match_ratio);
 	if (static_cast<int>(matches.size()) < o.recognition_min_inliers) return std::nullopt;
 	Correspondences c;
 	for (const auto& [qi, pi] : matches) c.add(lm, image, qi, pi);
@@ -275,17 +197,9 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	cv::Mat rvec, tvec;
 	std::vector<int> inliers;
 	const bool found = robustPnP(c.object, c.pixels, K, o, rvec, tvec, inliers);
-	const int leastToRefine = o.recognition_local_optimization ? kRansacSampleSize : o.recognition_min_inliers;
-	if (!found || static_cast<int>(inliers.size()) < leastToRefine) return std::nullopt;
-	PoseConsensus fit = refineOnInliers(c.object, c.pixels, K, o, inliers, rvec, tvec);
+	if (!found || static_cast<int>(inliers.size()) < o.recognition_min_inliers) return std::nullopt;
+	PoseConsensus fit = refineOnInliers(c.object, c.pixels, K, o.recognition_ransac_px, inliers, rvec, tvec);
 	if (static_cast<int>(fit.inliers.size()) < o.recognition_min_inliers) return std::nullopt;
-	// Only a recognition already accepted is extended: the search adds
-	// matches to a pose, never a pose to the image.
-	if (o.recognition_guided_radius_px > 0)
-	{
-		fit = extendByProjection(image, query, lm, landmarkDescriptors, K, o, c, fit, rvec, tvec);
-		if (static_cast<int>(fit.inliers.size()) < o.recognition_min_inliers) return std::nullopt;
-	}
 	const std::vector<cv::Point3f>& object = c.object;
 	const std::vector<cv::Point2f>& pixels = c.pixels;
 	const std::vector<int>& refinedInliers = fit.inliers;
@@ -315,13 +229,6 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.NPoints = n;
 	m.ProjErrRMS = std::sqrt(fit.sumSquaredPx / n);
 	m.matches = static_cast<int>(c.size());
-	m.inlierSpread = inlierMinorSpread(inlierPixels, image.camera.K());
-	if (o.recognition_ambiguity_min_gap > 0)
-	{
-		const CameraPoseFit pose{cv::Vec3d(rvec), cv::Vec3d(tvec), m.ProjErrRMS};
-		if (const auto other = competingPose(inlierObject, inlierPixels, image.camera.K(), pose))
-			m.ambiguityGap = reprojectionCostGap(pose, *other, inlierObject.size());
-	}
 	if (!conditioned)
 		conditioned = poseCovariance(
 			poseSolveResiduals(inlierObject, std::vector<float>(), creationCamera, rvec, tvec, image.camera.K()),

@@ -14,14 +14,6 @@
  * of the image leave rotation and sideways translation confusable, and
  * their measurement can be degrees off with a small reprojection error:
  * the paper's statistics do not see it, the predicted uncertainty does.
- * A few points on one surface seen small have a second, mirrored pose
- * that reprojects almost as well; with recognition_ambiguity_min_gap the
- * gap between the two is measured (ambiguityGap) for the caller to judge.
- * So is the inliers' spread over the image (inlierSpread): a pose from
- * points crowded into a thin strip can be a coherent set of wrong matches.
- * With recognition_planar the 6-DOF solution is refined with the robot on
- * the floor (PlanarPose.h): its pose, inliers, ProjErrRMS and predicted
- * uncertainty are then the planar fit's; Slope stays the 6-DOF solve's.
  */
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
@@ -31,7 +23,6 @@
 
 #include <Eigen/Core>
 
-#include <limits>
 #include <optional>
 
 namespace vslam
@@ -59,14 +50,6 @@ struct VisualMeasurement
 	/** The predicted covariance of (dx, dy, dtheta) they come from;
 	 * infinite where the solve is degenerate. */
 	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-	/** How much better the 6-DOF pose explains its inliers than the best
-	 * competing pose (PoseAmbiguity.h), in pixel noise variances; infinite
-	 * when there is none or recognition_ambiguity_min_gap is 0 (not tested). */
-	double ambiguityGap = std::numeric_limits<double>::infinity();
-	/** How widely the 6-DOF solve's inliers spread over the image: the std
-	 * of their viewing directions across the direction they vary least
-	 * (rad; InlierSpread.h). The caller's recognition_min_spread_deg. */
-	double inlierSpread = 0;
 };
 
 /** The measurement of `landmark` in `image`, if the pose solve finds at

@@ -29,7 +29,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "creation_min_baseline", creation_min_baseline, Range::positive());
 	creation_max_baseline =
 		readDouble(c, s, "creation_max_baseline", creation_max_baseline, Range::positive());
-	creation_below_inliers = readCount("creation_below_inliers", creation_below_inliers, 0, 100000);
 	creation_min_points = readCount("creation_min_points", creation_min_points, 6, 100000);
 	creation_max_points = readCount("creation_max_points", creation_max_points, 6, 100000);
 	creation_max_reprojection_px = readDouble(
@@ -41,8 +40,6 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, Range{0, 90, false, true});
 	creation_odometry_sigma_rel =
 		readDouble(c, s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, Range{0, 10, false, true});
-	creation_visual_heading = readBool(c, s, "creation_visual_heading", creation_visual_heading);
-	creation_guided_matching = readBool(c, s, "creation_guided_matching", creation_guided_matching);
 	scale_refinement = readBool(c, s, "scale_refinement", scale_refinement);
 	scale_odometry_sigma =
 		readDouble(c, s, "scale_odometry_sigma", scale_odometry_sigma, Range::closed(0, 10));
@@ -54,18 +51,9 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 		readDouble(c, s, "recognition_ransac_px", recognition_ransac_px, Range::positive());
 	recognition_ransac_iterations =
 		readCount("recognition_ransac_iterations", recognition_ransac_iterations, 1, 100000);
-	recognition_local_optimization =
-		readBool(c, s, "recognition_local_optimization", recognition_local_optimization);
 	recognition_structure_weighted = readBool(c, s, "recognition_structure_weighted", recognition_structure_weighted);
-	recognition_ambiguity_min_gap =
-		readDouble(c, s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, Range::nonNegative());
-	recognition_min_spread = readDegreesAsRadians(
-		c, s, "recognition_min_spread_deg", recognition_min_spread, Range::closed(0, 90));
-	recognition_match_both_ways = readBool(c, s, "recognition_match_both_ways", recognition_match_both_ways);
 	auto& gate = recognition_odometry_gate;
 	gate.horizon = readDouble(c, s, "recognition_odometry_gate_s", gate.horizon, Range::nonNegative());
-	recognition_guided_radius_px =
-		readDouble(c, s, "recognition_guided_radius_px", recognition_guided_radius_px, Range::nonNegative());
 	search_index = readWord(c, s, "search_index", search_index, {"kdtree", "flann", "bbf"});
 	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
@@ -109,7 +97,6 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_views", creation_views, 30, 10, "Images a new landmark is built from (>= 3)");
 	c.write(s, "creation_min_baseline", creation_min_baseline, 30, 10, "Robot travel between creation views [m]");
 	c.write(s, "creation_max_baseline", creation_max_baseline, 30, 10, "Views older than this travel are dropped [m]");
-	c.write(s, "creation_below_inliers", creation_below_inliers, 30, 10, "Also build landmarks while the best recognition has fewer inliers (0: only when none)");
 	c.write(s, "creation_min_points", creation_min_points, 30, 10, "Good 3-D points a landmark needs");
 	c.write(s, "creation_max_points", creation_max_points, 30, 10, "Points kept per landmark at most");
 	c.write(s, "creation_max_reprojection_px", creation_max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");
@@ -117,10 +104,6 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "creation_max_depth", creation_max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
 	c.write(s, "creation_odometry_sigma_deg", creation_odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
 	c.write(s, "creation_odometry_sigma_rel", creation_odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
-	c.write(s, "creation_visual_heading", creation_visual_heading, 30, 10,
-		"With heading_change: the measured heading between creation views replaces the odometry's");
-	c.write(s, "creation_guided_matching", creation_guided_matching, 30, 10,
-		"Match creation views near the epipolar lines the odometry predicts");
 	c.write(s, "scale_refinement", scale_refinement, 30, 10, "Refine landmark scales from later sightings and odometry");
 	c.write(s, "scale_odometry_sigma", scale_odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (0: [vslam_motion_model] sigma_T)");
 	c.write(s, "recognition_min_votes", recognition_min_votes, 30, 10, "Feature votes that make a landmark a candidate");
@@ -128,20 +111,10 @@ void TVisualFrontEndOptions::saveToConfigFile(
 	c.write(s, "recognition_min_inliers", recognition_min_inliers, 30, 10, "PnP inliers needed to accept a pose");
 	c.write(s, "recognition_ransac_px", recognition_ransac_px, 30, 10, "RANSAC inlier threshold [px]");
 	c.write(s, "recognition_ransac_iterations", recognition_ransac_iterations, 30, 10, "RANSAC draw budget");
-	c.write(s, "recognition_local_optimization", recognition_local_optimization, 30, 10,
-		"Refine the best RANSAC pose on its inliers while they grow, also when RANSAC found too few");
 	c.write(s, "recognition_structure_weighted", recognition_structure_weighted, 30, 10,
 		"Refine the pose weighting each inlier by its pixel noise plus its point's depth uncertainty from creation (6-DOF solve)");
-	c.write(s, "recognition_ambiguity_min_gap", recognition_ambiguity_min_gap, 30, 10,
-		"Reject a pose that a competing pose (a plane's mirror pose) explains almost as well: least cost gap [px noise variances] (0: off)");
-	c.write(s, "recognition_min_spread_deg", recognition_min_spread * 180 / M_PI, 30, 10,
-		"Reject a pose whose inliers spread less than this across the image (std of their viewing directions along their minor axis) [deg] (0: off)");
-	c.write(s, "recognition_match_both_ways", recognition_match_both_ways, 30, 10,
-		"Keep a feature-to-point match only if the ratio test also passes from the point's side (against self-similar textures)");
 	c.write(s, "recognition_odometry_gate_s", recognition_odometry_gate.horizon, 30, 10,
 		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry (by 0.3 m + 10% of its distance, or 10 deg) [s] (0: off)");
-	c.write(s, "recognition_guided_radius_px", recognition_guided_radius_px, 30, 10,
-		"After an accepted pose, seek its unmatched landmark points among the features this near their projection [px] (0: off)");
 	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks) | bbf (bounded codes compared)");
 	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
 	c.write(s, "search_checks", search_checks, 30, 10, "flann: leaves checked per query and level");

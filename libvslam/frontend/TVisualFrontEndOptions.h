@@ -41,11 +41,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	double creation_min_baseline = 0.15;
 	/** A view older than this travel from the newest is dropped, m. */
 	double creation_max_baseline = 1.0;
-	/** Also build a landmark while the best recognition has fewer PnP
-	 * inliers than this (the landmarks in view are leaving it), so the new
-	 * landmark's frame is placed while the robot is still localized
-	 * (0: only when nothing is recognized, the paper's rule). */
-	int creation_below_inliers = 0;
 	int creation_min_points = 25;  //!< good 3-D points a landmark needs
 	int creation_max_points = 300;  //!< strongest points kept per landmark
 	double creation_max_reprojection_px = 2.0;  //!< per view, after refinement
@@ -57,24 +52,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * trading rotation for sideways translation (bas-relief ambiguity). */
 	double creation_odometry_sigma_deg = 1.0;
 	double creation_odometry_sigma_rel = 0.05;
-	/** With heading_change: between creation views linked by measured
-	 * heading changes, their summed heading replaces the odometry's and its
-	 * std the prior's about the vertical (creation_odometry_sigma_deg then
-	 * holds only the tilt). Forward motion makes a landmark's depths trade
-	 * against that heading: an error of 0.2 deg tilts a wall's depths by
-	 * about 10% at the image's edges, and every later measurement of it
-	 * errs in heading in proportion to its distance from the creation. It
-	 * halves the measurements' median heading error on the rendered
-	 * sequences, but the filter's error does not fall with it, so it is off. */
-	bool creation_visual_heading = false;
-	/** Match the creation views' features near the epipolar lines the
-	 * odometry predicts (a band of 3 sigma of creation_odometry_sigma_deg
-	 * and creation_odometry_sigma_rel, plus 3 px): the ratio test then
-	 * compares a feature only with the candidates the geometry allows, so
-	 * texture repeated elsewhere in the image no longer vetoes its match.
-	 * On the rendered rooms it halves the living room's measurements beyond
-	 * 3 sigma, but the filter's error does not fall with it, so it is off. */
-	bool creation_guided_matching = false;
 
 	/** Refine each landmark's scale from its later sightings against the
 	 * odometry between them (LandmarkScaleTrack.h). */
@@ -94,11 +71,6 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	int recognition_min_inliers = 12;  //!< PnP inliers to accept a pose
 	double recognition_ransac_px = 3.0;  //!< RANSAC inlier threshold
 	int recognition_ransac_iterations = 300;  //!< RANSAC's draw budget
-	/** Refine RANSAC's best pose on its inliers and count them again, while
-	 * the set grows (LO-RANSAC's local optimization), also when RANSAC's own
-	 * count falls short; false: one refinement, and only of a pose RANSAC
-	 * already found with recognition_min_inliers. */
-	bool recognition_local_optimization = false;
 	/** Refine the pose with each inlier weighted by its pixel noise plus its
 	 * point's depth uncertainty from creation (generalized least squares,
 	 * WeightedPoseRefinement.h); the predicted uncertainty is then that
@@ -107,34 +79,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	bool recognition_structure_weighted = false;
 	/** Whether landmarks keep each point's depth std. */
 	bool keepsDepthStd() const { return recognition_structure_weighted; }
-	/** A recognition is kept only if its pose explains the inliers better
-	 * than the best competing pose (the mirror pose of a plane seen small,
-	 * PoseAmbiguity.h) by at least this much: the difference of their
-	 * squared reprojection errors in units of the pixel noise variance
-	 * (0: no test). */
-	double recognition_ambiguity_min_gap = 0;
-	/** A recognition is kept only if its inliers spread over at least this
-	 * angle across the image: the std of their viewing directions along the
-	 * direction they vary least (InlierSpread.h). Points in a thin strip
-	 * constrain the pose poorly, and on a self-similar texture a few wrong
-	 * matches there can agree on a wrong pose (0: no test). */
-	double recognition_min_spread = 0;  //!< rad (INI: degrees)
-	/** Keep a match of an image feature to a landmark point only if it also
-	 * passes the ratio test from the point's side: the feature is the
-	 * point's nearest in the image, nearer than match_ratio x the second
-	 * nearest (DescriptorMatching.h). Against self-similar textures, where
-	 * one point resembles many features. */
-	bool recognition_match_both_ways = false;
 	/** A recognition is kept only if it agrees with the same landmark's last
 	 * kept one, carried to now by the odometry, when that one is at most
 	 * `horizon` old (OdometryConsistency.h; INI key recognition_odometry_gate_s,
 	 * 0: no test). The tolerances are OdometryConsistency's. */
 	TOdometryConsistency recognition_odometry_gate;
-	/** After an accepted pose: the landmark points it leaves unmatched are
-	 * sought among the image features within this many pixels of where it
-	 * projects them, the pose refined with what is found and the inliers
-	 * counted again (ProjectionMatching.h; 0: no search). */
-	double recognition_guided_radius_px = 0;
 	/** The descriptor index (DescriptorIndex.h): "kdtree" (nanoflann,
 	 * eps-approximate), "flann" (OpenCV FLANN randomized k-d trees,
 	 * bounded checks: cost per query nearly independent of the map size)
