@@ -35,7 +35,7 @@ case "$MODE" in demo | test | build) ;; *) usage ;; esac
 
 # Debian 12 packages: compiler and build tools, MRPT 2.5.8 (libraries, the
 # apps rawlog-edit / kf-slam / rbpf-slam, and mrpt-common's demo datasets),
-# OpenCV 4.6, Eigen 3.4, nanoflann, Boost (Math), GoogleTest, Google
+# OpenCV 4.6, Eigen 3.4, Boost (Math), GoogleTest, Google
 # Benchmark, zlib;
 # Mesa's EGL and software rasterizer (vslam-simul renders headless through
 # MRPT's CFBORender); photographs for the simulated worlds' textures and
@@ -47,7 +47,7 @@ PACKAGES=(
   libegl1 libegl-mesa0 libgl1-mesa-dri libgbm1
   mate-backgrounds plasma-workspace-wallpapers
   sweethome3d sweethome3d-furniture libzip-dev
-  libopencv-dev libeigen3-dev libnanoflann-dev libboost-dev
+  libopencv-dev libeigen3-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev
   time

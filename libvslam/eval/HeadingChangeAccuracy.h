@@ -3,7 +3,7 @@
  * How right the front-end's heading changes between images are, against a
  * ground-truth path, next to what the wheel odometry said over the same
  * intervals: the error, how it compares with the std the estimate predicts
- * (its calibration, for [vslam_heading_change] std_scale), and how much
+ * (its calibration), and how much
  * better than odometry it is.
  */
 #include <libvslam/io/Trajectory.h>

@@ -22,8 +22,6 @@ void CKidnapDetector::TOptions::loadFromConfigFile(
 		{0, 1, false, true});
 	revert_on_contradiction =
 		readBool(c, s, "revert_on_contradiction", revert_on_contradiction);
-	hypothesis_from_every_measurement = readBool(
-		c, s, "hypothesis_from_every_measurement", hypothesis_from_every_measurement);
 }
 
 void CKidnapDetector::TOptions::saveToConfigFile(
@@ -40,8 +38,6 @@ void CKidnapDetector::TOptions::saveToConfigFile(
 		"Weight fraction of particles whose gate must hold a measurement for it to count as explained");
 	c.write(s, "revert_on_contradiction", revert_on_contradiction, 25, 12,
 		"Go back to the cloud left at a kidnap when another anchored landmark contradicts the kidnap");
-	c.write(s, "hypothesis_from_every_measurement", hypothesis_from_every_measurement, 25, 12,
-		"Draw a new hypothesis from every pose measurement of its first frame, not only the most informative");
 }
 
 CKidnapDetector::Verdict CKidnapDetector::update(
@@ -94,9 +90,7 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 	else
 	{
 		m_hypothesis.start(
-			counted, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng,
-			options.hypothesis_from_every_measurement ? HypothesisSeed::EveryPoseMeasurement
-													  : HypothesisSeed::MostInformative);
+			counted, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng);
 		m_hypothesisAnchored = anyAnchored;
 	}
 

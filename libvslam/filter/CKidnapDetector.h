@@ -63,9 +63,6 @@ class CKidnapDetector
 		/** Keep the cloud left at a kidnap, and go back to it when another
 		 * landmark contradicts the kidnap (see the file comment). */
 		bool revert_on_contradiction = true;
-		/** Draw a new hypothesis from every pose measurement of its first
-		 * frame (a mixture), not only the most informative one. */
-		bool hypothesis_from_every_measurement = false;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,

@@ -57,8 +57,6 @@ void CMeasurementExtractor::THeadingChangeOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	enabled = readBool(c, s, "enabled", enabled);
-	std_scale = readDouble(c, s, "std_scale", std_scale, Range{0, 100, false, true});
-	min_std = readDegreesAsRadians(c, s, "min_std_deg", min_std, Range::closed(0, 90));
 	gate_probability = readDouble(c, s, "gate_probability", gate_probability, {0, 1, false, false});
 }
 
@@ -67,8 +65,6 @@ void CMeasurementExtractor::THeadingChangeOptions::saveToConfigFile(
 {
 	c.write(s, "enabled", enabled, 25, 12,
 		"Fuse the front-end's heading changes between images into the odometry (not in the paper)");
-	c.write(s, "std_scale", std_scale, 25, 12, "Factor on each heading change's predicted std");
-	c.write(s, "min_std_deg", min_std * 180 / M_PI, 25, 12, "Added to each heading change's std (root sum square) [deg]");
 	c.write(s, "gate_probability", gate_probability, 25, 12,
 		"Chi-square gate against the odometry: a heading change outside it is not used");
 }
@@ -168,9 +164,9 @@ void CMeasurementExtractor::addHeadingChange(const CObservationHeadingChange& h,
 			std::to_string(mrpt::Clock::toDouble(h.previousTimestamp)) + ", not before its own time " +
 			std::to_string(mrpt::Clock::toDouble(h.timestamp)));
 	if (!headingChange.enabled) return;
-	const double s = headingChange.std_scale * h.stdDphi;
+	constexpr double kMinStd = THeadingChangeOptions::kMinStd;
 	const HeadingChangeMeasurement m{
-		h.previousTimestamp, h.timestamp, h.dphi, s * s + headingChange.min_std * headingChange.min_std};
+		h.previousTimestamp, h.timestamp, h.dphi, h.stdDphi * h.stdDphi + kMinStd * kMinStd};
 	if (!out.headingChange)
 		m_stats.headingChangesPassed++;
 	else if (out.headingChange->variance <= m.variance)

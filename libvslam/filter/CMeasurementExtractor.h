@@ -121,10 +121,9 @@ class CMeasurementExtractor
 	struct THeadingChangeOptions : public mrpt::config::CLoadableOptions
 	{
 		bool enabled = false;
-		/** The variance given to a heading change: (std_scale x its
-		 * predicted std)^2 + min_std^2. */
-		double std_scale = 1;
-		double min_std = 0.01 * M_PI / 180;  //!< rad (INI: degrees)
+		/** The variance given to a heading change is its predicted variance
+		 * plus kMinStd^2, a floor against a zero variance from a perfect fit. */
+		static constexpr double kMinStd = 0.01 * M_PI / 180;  //!< rad
 		/** A heading change beyond this chi-square gate of the odometry
 		 * (1 degree of freedom) is not used. */
 		double gate_probability = 0.999;

@@ -208,15 +208,14 @@ TEST(CMeasurementExtractor, HeadingChangesPassOnlyWhenEnabledWithTheirNoise)
 	EXPECT_EQ(ex.stats().headingChangesPassed, 0u);
 
 	ex.headingChange.enabled = true;
-	ex.headingChange.std_scale = 2;
-	ex.headingChange.min_std = 1e-3;
 	f = ex.extract(sf);
 	ASSERT_TRUE(f.headingChange);
 	EXPECT_TRUE(f.empty());  // no landmark measurement: the filter only corrects its odometry
 	EXPECT_EQ(f.headingChange->from, mrpt::Clock::fromDouble(10.0));
 	EXPECT_EQ(f.headingChange->to, mrpt::Clock::fromDouble(10.4));
 	EXPECT_EQ(f.headingChange->dphi, 0.05);
-	EXPECT_NEAR(f.headingChange->variance, 4e-6 + 1e-6, 1e-18);
+	constexpr double kMin = decltype(ex.headingChange)::kMinStd;
+	EXPECT_NEAR(f.headingChange->variance, 1e-6 + kMin * kMin, 1e-18);
 
 	// Two cameras: the more precise one.
 	sf.insert(headingChange(10.1, 10.4, 0.06, 5e-4));

@@ -15,7 +15,6 @@ void CMixtureProposal::TOptions::loadFromConfigFile(
 	dual_ratio = readDouble(c, s, "dual_ratio", dual_ratio, Range::closed(0, 1));
 	dual_ratio_max =
 		readDouble(c, s, "dual_ratio_max", dual_ratio_max, Range::closed(0, 1));
-	dynamic_ratio = readBool(c, s, "dynamic_ratio", dynamic_ratio);
 	dual_only_if_sharper =
 		readBool(c, s, "dual_only_if_sharper", dual_only_if_sharper);
 }
@@ -29,9 +28,7 @@ void CMixtureProposal::TOptions::saveToConfigFile(
 	c.write(s, "dual_ratio", dual_ratio, 25, 12,
 		"Base share of dual particles, [0,1] (paper: 20 of 200 = 0.1)");
 	c.write(s, "dual_ratio_max", dual_ratio_max, 25, 12,
-		"Share reached when no particle explains the measurements (both 0: no duals)");
-	c.write(s, "dynamic_ratio", dynamic_ratio, 25, 12,
-		"Raise the share from dual_ratio to dual_ratio_max as the explained fraction falls");
+		"Share reached as the explained fraction falls to 0 (= dual_ratio: fixed; both 0: no duals)");
 	c.write(s, "dual_only_if_sharper", dual_only_if_sharper, 25, 12,
 		"Draw duals only if sharper than the predicted cloud or the cloud misses the measurement");
 }
@@ -39,7 +36,6 @@ void CMixtureProposal::TOptions::saveToConfigFile(
 double CMixtureProposal::ratio(double explainedFraction, bool dualUseful) const
 {
 	if (options.dual_only_if_sharper && !dualUseful) return 0.0;
-	if (!options.dynamic_ratio) return options.dual_ratio;
 	const double f = std::clamp(explainedFraction, 0.0, 1.0);
 	const double hi = std::max(options.dual_ratio, options.dual_ratio_max);
 	return options.dual_ratio + (hi - options.dual_ratio) * (1.0 - f);

@@ -34,10 +34,9 @@ class CMixtureProposal
 		/** Base share of dual particles (paper example: 20 of 200). */
 		double dual_ratio = 0.1;
 		/** Share of dual particles when no particle explains the
-		 * measurements (the dynamic ratio rises towards it). */
+		 * measurements: the ratio rises towards it as the explained weight
+		 * fraction falls (equal to dual_ratio: a fixed share). */
 		double dual_ratio_max = 0.5;
-		/** Raise the ratio as the explained weight fraction falls. */
-		bool dynamic_ratio = true;
 		/** Draw duals only where they can help: when they are sharper than
 		 * the predicted cloud (det of position covariances) or the cloud
 		 * misses the measurement; otherwise they waste particles. */

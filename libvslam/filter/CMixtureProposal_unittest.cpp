@@ -11,8 +11,9 @@ TEST(CMixtureProposal, DynamicRatioRisesAsTheExplainedFractionFalls)
 	EXPECT_DOUBLE_EQ(m.ratio(1.0, true), 0.1);
 	EXPECT_DOUBLE_EQ(m.ratio(0.0, true), 0.5);
 	EXPECT_DOUBLE_EQ(m.ratio(0.5, true), 0.3);
-	m.options.dynamic_ratio = false;
+	m.options.dual_ratio_max = 0.1;  // a fixed share
 	EXPECT_DOUBLE_EQ(m.ratio(0.0, true), 0.1);
+	EXPECT_DOUBLE_EQ(m.ratio(1.0, true), 0.1);
 }
 
 TEST(CMixtureProposal, NoDualsWhenTheyCannotSharpenTheCloud)

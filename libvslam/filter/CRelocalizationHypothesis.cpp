@@ -50,49 +50,24 @@ double CRelocalizationHypothesis::logLikelihood(
 	return sum;
 }
 
-std::vector<CDualProposal> vslam::seedProposals(
-	const std::vector<KnownMeasurement>& ms, const LandmarkBank& bank, HypothesisSeed seed)
-{
-	const auto dualOf = [&](const KnownMeasurement& k) {
-		return landmarkModel(k.m->kind())
-			.dualProposal(bank[k.slot], *k.m, HeadingPrior::Uniform());
-	};
-	std::vector<CDualProposal> duals;
-	if (seed == HypothesisSeed::EveryPoseMeasurement)
-		for (const auto& k : ms)
-			if (k.m->kind() == LandmarkKind::Pose)
-				if (auto q = dualOf(k); q.valid()) duals.push_back(q);
-	if (duals.empty() && !ms.empty())
-		if (auto q = dualOf(ms[mostInformativeMeasurement(ms)]); q.valid())
-			duals.push_back(q);
-	return duals;
-}
-
 bool CRelocalizationHypothesis::start(
 	const std::vector<KnownMeasurement>& ms, const LandmarkBank& bank, size_t n,
-	const CRobustLikelihood& likelihood, mrpt::random::CRandomGenerator& rng,
-	HypothesisSeed seed)
+	const CRobustLikelihood& likelihood, mrpt::random::CRandomGenerator& rng)
 {
 	clear();
 	if (ms.empty() || n == 0) return false;
 	m_bank = bank;
-	const std::vector<CDualProposal> duals = seedProposals(ms, m_bank, seed);
-	if (duals.empty()) return false;
-	// An equal share of the samples from each proposal; the importance
-	// density is then their mixture (deterministic mixture sampling).
-	const double logShare = -std::log(static_cast<double>(duals.size()));
-	const auto logProposalDensity = [&](const se2::Pose& s) {
-		double sum = -std::numeric_limits<double>::infinity();
-		for (const auto& q : duals) sum = logSumExp(sum, logShare + q.logDensity(s));
-		return sum;
-	};
+	const KnownMeasurement& seed = ms[mostInformativeMeasurement(ms)];
+	const CDualProposal dual =
+		landmarkModel(seed.m->kind()).dualProposal(m_bank[seed.slot], *seed.m, HeadingPrior::Uniform());
+	if (!dual.valid()) return false;
 	std::vector<double> logW(n);
 	m_poses.resize(n);
 	for (size_t i = 0; i < n; i++)
 	{
-		m_poses[i] = duals[i % duals.size()].sample(rng);
+		m_poses[i] = dual.sample(rng);
 		// Uniform prior: importance factor = likelihood / proposal density.
-		logW[i] = logLikelihood(m_poses[i], ms, likelihood) - logProposalDensity(m_poses[i]);
+		logW[i] = logLikelihood(m_poses[i], ms, likelihood) - dual.logDensity(m_poses[i]);
 	}
 	resample(logW);
 	m_support = 1;

@@ -24,17 +24,6 @@ class CRandomGenerator;
 
 namespace vslam
 {
-/** Which measurements of its first frame a hypothesis draws samples from. */
-enum class HypothesisSeed : uint8_t
-{
-	/** The most informative one (mostInformativeMeasurement()). */
-	MostInformative,
-	/** Every pose measurement, in equal shares (a mixture), so that a false
-	 * recognition beside a true one cannot alone decide where the
-	 * hypothesis looks; without pose measurements, as MostInformative. */
-	EveryPoseMeasurement
-};
-
 class CRelocalizationHypothesis
 {
    public:
@@ -42,14 +31,13 @@ class CRelocalizationHypothesis
 	void clear();
 
 	/** Starts from measurements no particle explains: n dual samples
-	 * (uniform heading prior) from seedProposals(), weighted by all the
+	 * (uniform heading prior) from the most informative one, weighted by all the
 	 * measurements under a uniform pose prior, then resampled. Returns false
 	 * if no usable dual proposal exists. */
 	bool start(
 		const std::vector<KnownMeasurement>& ms, const LandmarkBank& bank,
 		size_t n, const CRobustLikelihood& likelihood,
-		mrpt::random::CRandomGenerator& rng,
-		HypothesisSeed seed = HypothesisSeed::MostInformative);
+		mrpt::random::CRandomGenerator& rng);
 
 	/** Starts from a cloud the filter held (poses with log-weights, and
 	 * their map): resampled to equal weights. */
@@ -97,10 +85,5 @@ class CRelocalizationHypothesis
 /** Index of the measurement whose dual proposal is most informative: pose
  * measurements first, then the closest range-bearing one. */
 size_t mostInformativeMeasurement(const std::vector<KnownMeasurement>& ms);
-
-/** The dual proposals (uniform heading prior) a hypothesis starting from
- * `ms` samples from (HypothesisSeed); invalid ones are left out. */
-std::vector<CDualProposal> seedProposals(
-	const std::vector<KnownMeasurement>& ms, const LandmarkBank& bank, HypothesisSeed seed);
 
 }  // namespace vslam

@@ -75,41 +75,6 @@ double shareNear(const std::vector<se2::Pose>& poses, const se2::Pose& p, double
 }
 }  // namespace
 
-TEST(CRelocalizationHypothesis, SeededFromEveryPoseMeasurementAFalseOneDoesNotDecide)
-{
-	// The frame that starts the hypothesis holds a false recognition (of
-	// landmark 1, as if seen from elsewhere) listed before a true one (of
-	// landmark 2). Seeded from the most informative measurement (the
-	// first), every sample sits away from the truth; seeded from both,
-	// both explanations survive, and a later true measurement of landmark 1
-	// finds part of the hypothesis on the truth and confirms it.
-	const LandmarkBank bank = twoPoseLandmarks();
-	const se2::Pose truth{0.3, -0.2, 0.4}, elsewhere{-1.0, 1.2, 2.0};
-	const auto falseOne = seenFrom(bank, 0, elsewhere, 0.09, 0.0436);
-	const auto trueOne = seenFrom(bank, 1, truth, 0.09, 0.0436);
-	const auto next = seenFrom(bank, 0, truth, 0.09, 0.0436);
-	const std::vector<KnownMeasurement> first{{&falseOne, 0, 0}, {&trueOne, 1, 0}};
-	CRobustLikelihood lik;
-	auto& rng = mrpt::random::getRandomGenerator();
-	rng.randomize(5);
-	EXPECT_EQ(seedProposals(first, bank, HypothesisSeed::MostInformative).size(), 1u);
-	EXPECT_EQ(seedProposals(first, bank, HypothesisSeed::EveryPoseMeasurement).size(), 2u);
-
-	CRelocalizationHypothesis one;
-	ASSERT_TRUE(one.start(first, bank, 1000, lik, rng, HypothesisSeed::MostInformative));
-	EXPECT_LT(shareNear(one.poses(), truth, 0.3), 0.01);
-	EXPECT_LT(one.explainedFraction({{&next, 0, 0}}, lik), 0.01);
-
-	CRelocalizationHypothesis every;
-	ASSERT_TRUE(every.start(first, bank, 1000, lik, rng, HypothesisSeed::EveryPoseMeasurement));
-	EXPECT_GT(shareNear(every.poses(), truth, 0.3), 0.2);
-	EXPECT_GT(shareNear(every.poses(), elsewhere, 0.3), 0.2);
-	EXPECT_GT(every.explainedFraction({{&next, 0, 0}}, lik), 0.2);
-	every.confirm({{&next, 0, 0}}, lik, rng);
-	EXPECT_GT(shareNear(every.poses(), truth, 0.3), 0.95);
-	EXPECT_EQ(every.support(), 2u);
-}
-
 TEST(CRelocalizationHypothesis, EveryMeasurementOfTheFrameWeighsTheSamples)
 {
 	// The first of two pose measurements (the one the samples are drawn

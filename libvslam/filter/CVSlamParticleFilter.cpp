@@ -129,26 +129,9 @@ void CVSlamParticleFilter::processFrame(const FrameMeasurements& frame)
 	// A heading change corrects the odometry the particles are drawn from
 	// next, at this frame or a later one.
 	if (frame.headingChange && m_options.headingChange.enabled) fuseHeadingChange(*frame.headingChange);
-	if (frame.empty()) return;
-	const auto& pf = m_options.pf;
-	if (pf.measurement_processing == MeasurementProcessing::Joint ||
-		frame.measurements.size() <= 1)
-	{
-		updateWithFrame(frame);
-		return;
-	}
-	// Sequential: one filter update per measurement, resampling in between
-	// (the last one is left to the caller, e.g. CParticleFilter::executeOn).
-	for (size_t k = 0; k < frame.measurements.size(); k++)
-	{
-		FrameMeasurements one;
-		one.timestamp = frame.timestamp;
-		one.measurements = {frame.measurements[k]};
-		const bool last = k + 1 == frame.measurements.size();
-		if (last) one.creations = frame.creations;
-		updateWithFrame(one);
-		if (!last && ESS() < pf.BETA) performResampling(pf.toMrpt());
-	}
+	// One importance weight for all the frame's measurements: an image's
+	// measurements are not independent draws in time.
+	if (!frame.empty()) updateWithFrame(frame);
 }
 
 void CVSlamParticleFilter::fuseHeadingChange(const HeadingChangeMeasurement& h)

@@ -82,7 +82,6 @@ TEST_P(MixturePosterior, MatchesTheAnalyticPosteriorForAnyDualRatio)
 	o.motion.sigma_R = 0.3;
 	o.motion.sigma_R_per_meter = 0.1;
 	o.mixture.dual_ratio = o.mixture.dual_ratio_max = phi;
-	o.mixture.dynamic_ratio = false;
 	o.mixture.dual_only_if_sharper = false;
 	o.likelihood.outlier_probability = 1e-9;
 	mrpt::random::getRandomGenerator().randomize(3);
@@ -278,19 +277,6 @@ TEST(CVSlamParticleFilter, ALandmarkUnexplainedWhileLocalizedStaysWhereItIs)
 	EXPECT_EQ(f.stats().landmarksReinitialized, 0u);
 	EXPECT_EQ(f.stats().rejectedUnexplained, 5u);
 	EXPECT_NEAR(f.meanPose().y, 0, 0.05);
-}
-
-TEST(CVSlamParticleFilter, SequentialProcessingUpdatesOncePerMeasurement)
-{
-	auto o = manyParticles(100);
-	o.pf.measurement_processing = MeasurementProcessing::Sequential;
-	mrpt::random::getRandomGenerator().randomize(9);
-	CVSlamParticleFilter f(o);
-	f.setPriorMap({{{LandmarkKind::Pose, 1}, poseLandmark({2, 0, 0})},
-				   {{LandmarkKind::Pose, 2}, poseLandmark({0, 2, 1.5})}});
-	f.processFrame(frame(1, {poseMeasurement(1, {2, 0, 0}), poseMeasurement(2, {0, 2, 1.5})}));
-	EXPECT_EQ(f.stats().frames, 2u);
-	EXPECT_EQ(f.stats().measurementsUsed, 2u);
 }
 
 TEST(CVSlamParticleFilter, NonFiniteOdometryIsAnInputError)

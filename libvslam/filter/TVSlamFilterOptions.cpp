@@ -9,7 +9,6 @@ namespace
 {
 const std::vector<std::string> kResamplingNames = {
 	"prMultinomial", "prResidual", "prStratified", "prSystematic"};
-const std::vector<std::string> kProcessingNames = {"joint", "sequential"};
 }  // namespace
 
 CParticleFilter::TParticleFilterOptions TParticleFilterOptions::toMrpt() const
@@ -33,9 +32,6 @@ void TParticleFilterOptions::loadFromConfigFile(
 		static_cast<CParticleFilter::TParticleResamplingAlgorithm>(readChoice(
 			c, s, "resamplingMethod", static_cast<size_t>(resamplingMethod),
 			kResamplingNames));
-	measurement_processing = static_cast<MeasurementProcessing>(readChoice(
-		c, s, "measurement_processing",
-		static_cast<size_t>(measurement_processing), kProcessingNames));
 	initialPose.x = readDouble(c, s, "initial_x", initialPose.x, Range::closed(-1e7, 1e7));
 	initialPose.y = readDouble(c, s, "initial_y", initialPose.y, Range::closed(-1e7, 1e7));
 	initialPose.phi = readDegreesAsRadians(c, s, "initial_phi_deg", initialPose.phi, Range::closed(-360, 360));
@@ -53,9 +49,6 @@ void TParticleFilterOptions::saveToConfigFile(
 	c.write(s, "BETA", BETA, 25, 12, "Resample when ESS < BETA, in [0,1]");
 	c.write(s, "resamplingMethod", kResamplingNames.at(resamplingMethod), 25, 12,
 		"prMultinomial | prResidual | prStratified | prSystematic");
-	c.write(s, "measurement_processing",
-		kProcessingNames.at(static_cast<size_t>(measurement_processing)), 25, 12,
-		"joint (one weight per image) | sequential (one update per measurement)");
 	c.write(s, "initial_x", initialPose.x, 25, 12, "Initial robot pose x [m]");
 	c.write(s, "initial_y", initialPose.y, 25, 12, "Initial robot pose y [m]");
 	c.write(s, "initial_phi_deg", initialPose.phi * 180 / M_PI, 25, 12,

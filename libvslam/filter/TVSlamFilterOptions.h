@@ -28,13 +28,6 @@
 
 namespace vslam
 {
-/** How several measurements of one frame are processed. */
-enum class MeasurementProcessing : uint8_t
-{
-	Joint = 0,  //!< one importance weight for the whole frame
-	Sequential = 1  //!< one filter update per measurement (the paper's way)
-};
-
 /** [vslam_particle_filter] */
 struct TParticleFilterOptions : public mrpt::config::CLoadableOptions
 {
@@ -44,7 +37,6 @@ struct TParticleFilterOptions : public mrpt::config::CLoadableOptions
 	double BETA = 0.5;
 	mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm
 		resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
-	MeasurementProcessing measurement_processing = MeasurementProcessing::Joint;
 	/** Initial robot pose and its spread (0: all particles on it). */
 	se2::Pose initialPose{0, 0, 0};
 	double initial_std_xy = 0;  //!< m

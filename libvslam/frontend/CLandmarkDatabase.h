@@ -1,8 +1,8 @@
 #pragma once
 /** \file CLandmarkDatabase.h
  * Every landmark the front-end knows, and an approximate nearest-neighbour
- * index over all their descriptors (DescriptorIndex.h: our best-bin-first
- * tree, OpenCV FLANN or nanoflann, `search_index`). An
+ * index over all their descriptors (DescriptorIndex.h: OpenCV FLANN or our
+ * best-bin-first tree, `search_index`). An
  * image's features vote for the landmarks their nearest descriptors belong
  * to (after Lowe's ratio test); the landmarks with most votes are the
  * candidates for the pose solve. Descriptors are stored once, encoded by

@@ -1,7 +1,6 @@
 #include <libvslam/frontend/BestBinFirstDescriptorIndex.h>
 #include <libvslam/frontend/DescriptorIndex.h>
 #include <libvslam/frontend/FlannDescriptorIndex.h>
-#include <libvslam/frontend/KdTreeDescriptorIndex.h>
 #include <libvslam/frontend/TVisualFrontEndOptions.h>
 
 #include <algorithm>
@@ -20,12 +19,11 @@ constexpr int kFlannTrees = 1;
 std::unique_ptr<DescriptorIndex> DescriptorIndex::create(
 	const TVisualFrontEndOptions& options, const DescriptorCodec& codec)
 {
-	if (options.search_index == "kdtree") return std::make_unique<KdTreeDescriptorIndex>(codec, options.search_eps);
 	if (options.search_index == "flann")
 		return std::make_unique<FlannDescriptorIndex>(codec, kFlannTrees, options.search_checks);
 	if (options.search_index == "bbf")
 		return std::make_unique<BestBinFirstDescriptorIndex>(codec, options.search_bbf_compared);
-	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (kdtree | flann | bbf)");
+	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (flann | bbf)");
 }
 
 void DescriptorIndex::add(int64_t owner, const cv::Mat& siftDescriptors)

@@ -8,7 +8,6 @@
  * removedRows() passes half of rows().
  *
  * Back-ends (`[vslam_frontend] search_index`):
- *  - kdtree (KdTreeDescriptorIndex.h): nanoflann, eps-approximate;
  *  - flann (FlannDescriptorIndex.h): OpenCV FLANN randomized k-d trees
  *    searched with a bounded number of leaf checks, so a query costs about
  *    the same whatever the map's size;

@@ -66,11 +66,10 @@ NearestLandmarkRows bruteForce(const std::map<int64_t, cv::Mat>& codesByOwner, c
 struct Scenario
 {
 	std::string index;
-	double eps;  // kdtree
 	int checks;  // flann; bbf: codes compared
 };
 
-void PrintTo(const Scenario& s, std::ostream* os) { *os << s.index << " eps " << s.eps << " checks " << s.checks; }
+void PrintTo(const Scenario& s, std::ostream* os) { *os << s.index << " checks " << s.checks; }
 
 class DescriptorIndexScenario : public ::testing::TestWithParam<Scenario>
 {
@@ -79,7 +78,6 @@ class DescriptorIndexScenario : public ::testing::TestWithParam<Scenario>
 	{
 		TVisualFrontEndOptions options;
 		options.search_index = GetParam().index;
-		options.search_eps = GetParam().eps;
 		options.search_checks = GetParam().checks;
 		options.search_bbf_compared = GetParam().checks;
 		return DescriptorIndex::create(options, codec);
@@ -175,11 +173,10 @@ TEST_P(DefaultDescriptorIndex, RecallsTheRightLandmarkAndSkipsRemovedOnes)
 
 const TVisualFrontEndOptions kDefaults;
 INSTANTIATE_TEST_SUITE_P(BackEnds, ExactDescriptorIndex,
-	::testing::Values(Scenario{"kdtree", 0, 0}, Scenario{"flann", 0, 100000}, Scenario{"bbf", 0, 100000}),
+	::testing::Values(Scenario{"flann", 100000}, Scenario{"bbf", 100000}),
 	[](const auto& info) { return info.param.index; });
 INSTANTIATE_TEST_SUITE_P(BackEnds, DefaultDescriptorIndex,
-	::testing::Values(Scenario{"kdtree", kDefaults.search_eps, 0}, Scenario{"flann", 0, kDefaults.search_checks},
-		Scenario{"bbf", 0, kDefaults.search_bbf_compared}),
+	::testing::Values(Scenario{"flann", kDefaults.search_checks}, Scenario{"bbf", kDefaults.search_bbf_compared}),
 	[](const auto& info) { return info.param.index; });
 }  // namespace
 

@@ -54,8 +54,7 @@ void TVisualFrontEndOptions::loadFromConfigFile(
 	recognition_structure_weighted = readBool(c, s, "recognition_structure_weighted", recognition_structure_weighted);
 	auto& gate = recognition_odometry_gate;
 	gate.horizon = readDouble(c, s, "recognition_odometry_gate_s", gate.horizon, Range::nonNegative());
-	search_index = readWord(c, s, "search_index", search_index, {"kdtree", "flann", "bbf"});
-	search_eps = readDouble(c, s, "search_eps", search_eps, Range::nonNegative());
+	search_index = readWord(c, s, "search_index", search_index, {"flann", "bbf"});
 	search_checks = readCount("search_checks", search_checks, 1, 100000);
 	search_bbf_compared = readCount("search_bbf_compared", search_bbf_compared, 1, 100000000);
 	search_dims = readCount("search_dims", search_dims, 4, 128);
@@ -115,8 +114,7 @@ void TVisualFrontEndOptions::saveToConfigFile(
 		"Refine the pose weighting each inlier by its pixel noise plus its point's depth uncertainty from creation (6-DOF solve)");
 	c.write(s, "recognition_odometry_gate_s", recognition_odometry_gate.horizon, 30, 10,
 		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry (by 0.3 m + 10% of its distance, or 10 deg) [s] (0: off)");
-	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: kdtree (nanoflann) | flann (bounded checks) | bbf (bounded codes compared)");
-	c.write(s, "search_eps", search_eps, 30, 10, "kdtree: approximate search (nanoflann eps; 0: exact)");
+	c.write(s, "search_index", search_index, 30, 10, "Descriptor index: flann (bounded checks) | bbf (bounded codes compared)");
 	c.write(s, "search_checks", search_checks, 30, 10, "flann: leaves checked per query and level");
 	c.write(s, "search_bbf_compared", search_bbf_compared, 30, 10, "bbf: codes compared per query and level (leaves of 8)");
 	c.write(s, "search_dims", search_dims, 30, 10, "Dimensions of the projection the k-d tree votes in (128: none)");

@@ -84,14 +84,11 @@ struct TVisualFrontEndOptions : public mrpt::config::CLoadableOptions
 	 * `horizon` old (OdometryConsistency.h; INI key recognition_odometry_gate_s,
 	 * 0: no test). The tolerances are OdometryConsistency's. */
 	TOdometryConsistency recognition_odometry_gate;
-	/** The descriptor index (DescriptorIndex.h): "kdtree" (nanoflann,
-	 * eps-approximate), "flann" (OpenCV FLANN randomized k-d trees,
+	/** The descriptor index (DescriptorIndex.h): "flann" (OpenCV FLANN randomized k-d trees,
 	 * bounded checks: cost per query nearly independent of the map size)
 	 * or "bbf" (k-d trees with leaf buckets searched best bin first, a
 	 * bounded number of codes compared). */
 	std::string search_index = "flann";
-	/** kdtree: nanoflann's eps (0: exact). */
-	double search_eps = 2.0;
 	/** flann: randomized trees per level, and leaves checked per query and level. */
 	int search_checks = 32;
 	/** bbf: codes compared per query and level (whole leaves of 8). */
