@@ -11,12 +11,11 @@ BIN="${1:-$ROOT/build/bin}"
   cat <<'HEAD'
 # Configuration reference
 
-Every key of every INI section, its default and its meaning, generated from the code
-(`scripts/configuration_md.sh`; a test fails when this file is stale). The defaults are the code's;
-`config_ini/camera.ini` lists what a camera + odometry robot changes from them, `config_ini/paper.ini`
-the paper's settings. Sections of one INI file configure the components
-of one run; `--set SECTION.KEY=VALUE` overrides any key on the command line. An unknown or
-misspelled key, or a value out of range, is an error naming the file, section and key.
+Every key of every INI section (one per component), its default and its meaning, generated from the
+code (`scripts/configuration_md.sh`; a test fails when this file is stale). `config_ini/camera.ini`
+lists what a camera + odometry robot changes from these defaults, `config_ini/paper.ini` the paper's
+settings. `--set SECTION.KEY=VALUE` overrides any key; an unknown or misspelled key, or a value out of
+range, is an error naming the file, section and key.
 
 ## `vslam`
 HEAD

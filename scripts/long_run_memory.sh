@@ -12,7 +12,7 @@
 # section is rendered by vslam-simul (camera images, JPEG to save disk) and
 # vslam then runs the visual front-end too, e.g.
 #   scripts/long_run_memory.sh "600 3600" config_ini/simul_living_room.ini \
-#       config_ini/demo_rendered.ini -- --set vslam_frontend.max_landmarks=100
+#       config_ini/demo_rendered.ini -- --set vslam_landmark_database.max_landmarks=100
 # Keys after -- go to vslam. Work files go to /tmp/vslam_long_run.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -28,7 +28,7 @@
  * too but takes each landmark's scale error out of its measurements (fitted
  * against the truth; --oracle-scale-bias B leaves the odometry's own scale
  * error B in, which no estimate from the odometry can see). With
- * [vslam_frontend] heading_change, it also prints the heading changes'
+ * [vslam_heading_measurement] enabled, it also prints the heading changes'
  * errors, their calibration (error over predicted std) and the odometry's
  * error over the same intervals; --heading-csv writes every heading change
  * with its truth.
@@ -37,7 +37,7 @@
 #include <libvslam/app/ToolArguments.h>
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/ConfigError.h>
-#include <libvslam/config/IniText.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/core/ActionOdometry.h>
 #include <libvslam/core/InputError.h>
@@ -388,7 +388,7 @@ void printSummary(const vslam::CVisualFrontEnd& frontEnd, const vslam::ImagesToM
 	for (const auto& [why, count] : frontEnd.creationRejections()) std::cout << "; " << count << " x " << why;
 	std::cout << "\n";
 	std::cout << "vslam-frontend: recognitions not reported: " << frontEnd.poorlyConditionedRecognitions()
-			  << " degenerate, " << frontEnd.inconsistentRecognitions() << " inconsistent with the odometry (recognition_odometry_gate_s)\n";
+			  << " degenerate, " << frontEnd.inconsistentRecognitions() << " inconsistent with the odometry ([vslam_recognition] odometry_gate_s)\n";
 }
 }  // namespace
 
@@ -409,11 +409,15 @@ int main(int argc, const char** argv)
 		}
 		if (args.has("--print-default-config"))
 		{
-			std::cout << config::toIniText(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
+			mrpt::config::CConfigFileMemory defaults;
+			CVisualFrontEnd::TOptions().saveToConfig(defaults);
+			std::string text;
+			defaults.getContent(text);
+			std::cout << text;
 			return 0;
 		}
 		const FrontEndCommand c = parseCommand(args);
-		const TVisualFrontEndOptions options = loadFrontEndOptions(c.iniFile, c.overrides);
+		const CVisualFrontEnd::TOptions options = loadFrontEndOptions(c.iniFile, c.overrides);
 		// Sigma_vis and the pre-filter of the INI and the --set overrides, for
 		// the accuracy figures; every vslam key checked before the long run.
 		const TVSlamFilterOptions filter = loadFilterOptions(c.iniFile, c.overrides);
@@ -423,9 +427,9 @@ int main(int argc, const char** argv)
 		FrontEndPass pass = runFrontEnd(frontEnd, c.in);
 		writeActionFrameRawlog(c.out, pass.steps);
 		const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-		printSummary(frontEnd, pass.total, seconds, c.out, options.heading_change);
+		printSummary(frontEnd, pass.total, seconds, c.out, options.heading.enabled);
 		if (!c.groundTruthFile.empty()) printAccuracy(pass.records, pass.creationTimes, c.groundTruthFile, filter, c.csvFile);
-		if (!c.groundTruthFile.empty() && options.heading_change)
+		if (!c.groundTruthFile.empty() && options.heading.enabled)
 			printHeadingChangeAccuracy(pass.headingRecords, c.groundTruthFile, c.headingCsvFile);
 		if (!c.oracleFile.empty())
 		{

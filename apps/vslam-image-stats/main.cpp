@@ -1,6 +1,6 @@
 /** vslam-image-stats: is an image rawlog good for the visual front-end?
  *
- *   vslam-image-stats RAWLOG TRUE_PATH [--config INI] [--set vslam_frontend.KEY=VALUE ...]
+ *   vslam-image-stats RAWLOG TRUE_PATH [--config INI] [--set SECTION.KEY=VALUE ...]
  *
  * Prints SIFT features per image (the front-end's settings), and matches
  * (ratio test, then RANSAC fundamental-matrix inliers) between images 1 s
@@ -10,6 +10,7 @@
 #include <libvslam/app/ToolMain.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/obs/registerClasses.h>
+#include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/tools/ImageSequenceStats.h>
 
 #include <cstdio>
@@ -18,7 +19,7 @@
 namespace
 {
 const char* kUsage =
-	"Usage: vslam-image-stats RAWLOG TRUE_PATH [--config INI] [--set vslam_frontend.KEY=VALUE ...]\n";
+	"Usage: vslam-image-stats RAWLOG TRUE_PATH [--config INI] [--set SECTION.KEY=VALUE ...]\n";
 }
 
 int main(int argc, const char** argv)
@@ -34,8 +35,9 @@ int main(int argc, const char** argv)
 		}
 		const auto& positional = args.positional;
 		if (positional.size() != 2) throw std::invalid_argument("expected RAWLOG TRUE_PATH");
-		const auto s = computeImageSequenceStats(
-			positional[0], readTrajectory(positional[1]), loadFrontEndOptions(args.value("--config"), args.overrides));
+		const auto options = loadFrontEndOptions(args.value("--config"), args.overrides);
+		const auto s =
+			computeImageSequenceStats(positional[0], readTrajectory(positional[1]), options.features, options.camera);
 		std::printf("vslam-image-stats: %zu images; SIFT features per image: median %.0f, min %.0f, %zu images (%.0f%%) under 80\n",
 			s.images, s.medianFeatures, s.minFeatures, s.imagesUnder80Features,
 			s.images ? 100.0 * s.imagesUnder80Features / s.images : 0.0);

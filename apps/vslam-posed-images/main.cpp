@@ -4,7 +4,7 @@
  * tries to recognize it from every other view and prints the accuracy of
  * the measured relative poses against the ground truth.
  *
- *   vslam-posed-images FOLDER [--config INI] [--set vslam_frontend.KEY=VALUE ...]
+ *   vslam-posed-images FOLDER [--config INI] [--set SECTION.KEY=VALUE ...]
  *                      [--seed N] [--odometry-noise REL DEG] [--csv FILE]
  *
  * --odometry-noise: std of the relative translation error and of the heading
@@ -23,7 +23,7 @@
 namespace
 {
 const char* kUsage =
-	"Usage: vslam-posed-images FOLDER [--config INI] [--set vslam_frontend.KEY=VALUE ...]\n"
+	"Usage: vslam-posed-images FOLDER [--config INI] [--set SECTION.KEY=VALUE ...]\n"
 	"                          [--seed N] [--odometry-noise REL DEG] [--csv FILE]\n";
 }
 
@@ -66,7 +66,7 @@ int main(int argc, const char** argv)
 				positional.push_back(a);
 		}
 		if (positional.size() != 1) throw std::invalid_argument("expected one FOLDER");
-		const TVisualFrontEndOptions frontEnd = loadFrontEndOptions(iniFile, overrides);
+		const CVisualFrontEnd::TOptions frontEnd = loadFrontEndOptions(iniFile, overrides);
 		const auto views = readStrechaDataset(positional[0]);
 		const auto result = evaluatePosedImages(views, frontEnd, options);
 		const std::string title = std::filesystem::path(positional[0]).lexically_normal().filename().string();

@@ -67,7 +67,7 @@ std::string CVSlamApp::defaultConfigText()
 	mrpt::config::CConfigFileMemory c;
 	TVSlamAppOptions().saveToConfigFile(c, TVSlamAppOptions::kSection);
 	TVSlamFilterOptions().saveToConfig(c);
-	TVisualFrontEndOptions().saveToConfigFile(c, TVisualFrontEndOptions::kSection);
+	CVisualFrontEnd::TOptions().saveToConfig(c);
 	std::string text;
 	c.getContent(text);
 	return text;
@@ -79,7 +79,7 @@ std::vector<config::NumericKey> CVSlamApp::numericKeys()
 	const mrpt::config::CConfigFileMemory none;  // every key at its default
 	TVSlamAppOptions().loadFromConfigFile(none, TVSlamAppOptions::kSection);
 	TVSlamFilterOptions().loadFromConfig(none);
-	TVisualFrontEndOptions().loadFromConfigFile(none, TVisualFrontEndOptions::kSection);
+	CVisualFrontEnd::TOptions().loadFromConfig(none);
 	return recorder.keys();
 }
 
@@ -88,7 +88,7 @@ config::KnownKeys CVSlamApp::knownKeys()
 	config::KnownKeys known;
 	known.addFromOptions(TVSlamAppOptions(), TVSlamAppOptions::kSection);
 	TVSlamFilterOptions().registerKnownKeys(known);
-	known.addFromOptions(TVisualFrontEndOptions(), TVisualFrontEndOptions::kSection);
+	CVisualFrontEnd::TOptions().registerKnownKeys(known);
 	return known;
 }
 
@@ -118,7 +118,7 @@ void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::strin
 	config::checkNoUnknownKeys(params, knownKeys());
 	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);
 	filterOptions.loadFromConfig(params);
-	frontEndOptions.loadFromConfigFile(params, TVisualFrontEndOptions::kSection);
+	frontEndOptions.loadFromConfig(params);
 	frontEndOptions.takeOdometryNoiseFrom(filterOptions.motion.sigma_T);
 }
 
@@ -498,7 +498,7 @@ std::unique_ptr<CVisualFrontEnd> CVSlamApp::makeFrontEnd(const CVSlamMap* priorM
 		}
 		catch (const std::invalid_argument& e)
 		{
-			throw ConfigError(key + ": " + e.what() + " ([" + TVisualFrontEndOptions::kSection + "])");
+			throw ConfigError(key + ": " + e.what() + " ([" + CLandmarkDatabase::TOptions::kSection + "])");
 		}
 	}
 	if (appOptions.localization_only) frontEnd->fixMap();

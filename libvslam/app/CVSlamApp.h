@@ -26,7 +26,7 @@
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
 #include <libvslam/filter/TVSlamFilterOptions.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/Trajectory.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -65,7 +65,7 @@ class CVSlamApp
 	mrpt::config::CConfigFileMemory params;
 	TVSlamAppOptions appOptions;
 	TVSlamFilterOptions filterOptions;
-	TVisualFrontEndOptions frontEndOptions;  //!< used when the rawlog has images
+	CVisualFrontEnd::TOptions frontEndOptions;  //!< used when the rawlog has images
 
 	static std::string usage();
 	/** Every key with its default and documentation, as INI text. */

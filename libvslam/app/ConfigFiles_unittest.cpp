@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/config/IniText.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
+#include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/models/CMotionModel.h>
 #include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/sim/TMeasurementSimOptions.h>
@@ -143,28 +143,68 @@ TEST(ConfigFiles, SimulatorIniFilesListKnownKeysOnly)
 	}
 }
 
+namespace
+{
+std::string frontEndIniText(const CVisualFrontEnd::TOptions& o)
+{
+	mrpt::config::CConfigFileMemory c;
+	o.saveToConfig(c);
+	std::string text;
+	c.getContent(text);
+	return text;
+}
+}  // namespace
+
 TEST(ConfigFiles, FrontEndIniFilesListKnownKeysOnlyAndTheExampleShowsTheDefaults)
 {
-	const std::string section = TVisualFrontEndOptions::kSection;
 	config::KnownKeys known;
-	known.addFromOptions(TVisualFrontEndOptions(), section);
+	CVisualFrontEnd::TOptions().registerKnownKeys(known);
 	const auto example = readIni(kConfigDir / "frontend_example.ini");
-	for (const auto& key : known.keys(section)) EXPECT_TRUE(example.keyExists(section, key)) << key;
-	TVisualFrontEndOptions fromExample;
-	fromExample.loadFromConfigFile(example, section);
-	EXPECT_EQ(config::toIniText(fromExample, section), config::toIniText(TVisualFrontEndOptions(), section));
+	for (const auto& section : known.sections())
+		for (const auto& key : known.keys(section)) EXPECT_TRUE(example.keyExists(section, key)) << section << " " << key;
+	CVisualFrontEnd::TOptions fromExample;
+	fromExample.loadFromConfig(example);
+	EXPECT_EQ(frontEndIniText(fromExample), frontEndIniText(CVisualFrontEnd::TOptions()));
 	size_t checked = 0;
 	for (const auto& e : fs::directory_iterator(kConfigDir))
 	{
 		if (e.path().filename().string().rfind("frontend_", 0) != 0) continue;
 		SCOPED_TRACE(e.path().filename().string());
-		const auto ini = readIni(e.path());
-		EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known, section));
-		TVisualFrontEndOptions o;
-		EXPECT_NO_THROW(o.loadFromConfigFile(ini, section));
+		EXPECT_NO_THROW(loadFrontEndOptions(e.path().string(), {}));
 		checked++;
 	}
 	EXPECT_GE(checked, 2u);
+}
+
+TEST(ConfigFiles, AKeyOfTheFormerFrontEndSectionSaysWhereItWent)
+{
+	try
+	{
+		loadFrontEndOptions("", {config::parseOverride("vslam_frontend.creation_views=4")});
+		FAIL() << "expected ConfigError";
+	}
+	catch (const ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("is now [vslam_landmark_creation] views"), std::string::npos) << e.what();
+	}
+	// vslam itself, from an INI written for an earlier version.
+	const fs::path dir = fs::temp_directory_path() / "vslam_moved_key_test";
+	fs::create_directories(dir);
+	const std::string ini = (dir / "old.ini").string();
+	std::ofstream(ini) << "[vslam_frontend]\nheading_change = true\n";
+	CVSlamApp app;
+	const char* argv[] = {"vslam", ini.c_str(), "unused.rawlog"};
+	try
+	{
+		app.initialize(3, argv);
+		FAIL() << "expected ConfigError";
+	}
+	catch (const ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("is now [vslam_heading_measurement] enabled"), std::string::npos)
+			<< e.what();
+	}
+	fs::remove_all(dir);
 }
 
 TEST(ConfigFiles, RenderedSimulatorIniFilesLoadAndTheExampleShowsTheDefaults)
@@ -214,11 +254,11 @@ TEST(ConfigFiles, TheScaleTracksOdometryNoiseIsTheMotionModelsUnlessSet)
 	const std::string file = ini.string();
 	const char* argv[] = {"vslam", file.c_str(), "unused.rawlog"};
 	ASSERT_TRUE(app.initialize(3, argv));
-	EXPECT_EQ(app.frontEndOptions.scale_odometry_sigma, 0.08);
-	EXPECT_EQ(loadFrontEndOptions(file, {}).scale_odometry_sigma, 0.08);
+	EXPECT_EQ(app.frontEndOptions.scale.odometry_sigma, 0.08);
+	EXPECT_EQ(loadFrontEndOptions(file, {}).scale.odometry_sigma, 0.08);
 	// Given explicitly, the front-end's own value stands.
-	const auto own = loadFrontEndOptions(file, {config::parseOverride("vslam_frontend.scale_odometry_sigma=0.03")});
-	EXPECT_EQ(own.scale_odometry_sigma, 0.03);
-	EXPECT_EQ(loadFrontEndOptions("", {}).scale_odometry_sigma, CMotionModel::TOptions().sigma_T);
+	const auto own = loadFrontEndOptions(file, {config::parseOverride("vslam_scale_refinement.odometry_sigma=0.03")});
+	EXPECT_EQ(own.scale.odometry_sigma, 0.03);
+	EXPECT_EQ(loadFrontEndOptions("", {}).scale.odometry_sigma, CMotionModel::TOptions().sigma_T);
 	fs::remove_all(dir);
 }

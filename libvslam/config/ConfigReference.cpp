@@ -49,7 +49,7 @@ std::string markdownReference(const std::string& iniText, const std::vector<Nume
 		if (t.front() == '[' && t.back() == ']')
 		{
 			section = t.substr(1, t.size() - 2);
-			out << "\n### " << t << "\n\n| key | default | allowed | meaning |\n|---|---|---|---|\n";
+			out << "\n### " << t << "\n| key | default | allowed | meaning |\n|---|---|---|---|\n";
 			continue;
 		}
 		const size_t eq = t.find('=');

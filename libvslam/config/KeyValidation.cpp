@@ -43,6 +43,18 @@ void KnownKeys::add(const std::string& section, const std::string& key)
 		entry.second.push_back(key);
 }
 
+void KnownKeys::addMoved(const std::string& oldSection, const std::string& oldKey, const std::string& newSection,
+	const std::string& newKey)
+{
+	m_moved[lower(oldSection) + "/" + lower(oldKey)] = "[" + newSection + "] " + newKey;
+}
+
+std::string KnownKeys::movedTo(const std::string& section, const std::string& key) const
+{
+	const auto it = m_moved.find(lower(section) + "/" + lower(key));
+	return it == m_moved.end() ? std::string() : it->second;
+}
+
 bool KnownKeys::hasSection(const std::string& section) const
 {
 	return m_sections.count(lower(section)) > 0;
@@ -105,6 +117,26 @@ std::string closestMatch(
 	return bestDist <= tolerance ? best : std::string();
 }
 
+namespace
+{
+/** The error for a key of `section` that is not known there. */
+ConfigError unknownKeyError(const KnownKeys& known, const std::string& section, const std::string& key)
+{
+	const std::string moved = known.movedTo(section, key);
+	if (!moved.empty())
+		return ConfigError("key '" + key + "' of section [" + section + "] is now " + moved + ": move it there");
+	if (!known.hasSection(section))
+	{
+		const std::string near = closestMatch(section, known.sections());
+		return ConfigError(
+			"unknown section [" + section + "]" + (near.empty() ? std::string() : " (did you mean [" + near + "]?)"));
+	}
+	const std::string near = closestMatch(key, known.keys(section));
+	return ConfigError("unknown key '" + key + "' in section [" + section + "]" +
+		(near.empty() ? std::string(" (no similar key exists)") : " (did you mean '" + near + "'?)"));
+}
+}  // namespace
+
 void checkNoUnknownKeys(
 	const mrpt::config::CConfigFileBase& cfg, const KnownKeys& known,
 	const std::string& ownedPrefix)
@@ -114,25 +146,11 @@ void checkNoUnknownKeys(
 	for (const auto& section : sections)
 	{
 		if (!startsWith(lower(section), lower(ownedPrefix))) continue;
-		if (!known.hasSection(section))
-		{
-			const std::string near = closestMatch(section, known.sections());
-			throw ConfigError(
-				"unknown section [" + section + "]" +
-				(near.empty() ? std::string()
-							  : " (did you mean [" + near + "]?)"));
-		}
 		std::vector<std::string> keys;
 		cfg.getAllKeys(section, keys);
+		if (!known.hasSection(section) && keys.empty()) throw unknownKeyError(known, section, "");
 		for (const auto& key : keys)
-		{
-			if (known.has(section, key)) continue;
-			const std::string near = closestMatch(key, known.keys(section));
-			throw ConfigError(
-				"unknown key '" + key + "' in section [" + section + "]" +
-				(near.empty() ? std::string(" (no similar key exists)")
-							  : " (did you mean '" + near + "'?)"));
-		}
+			if (!known.has(section, key)) throw unknownKeyError(known, section, key);
 	}
 }
 

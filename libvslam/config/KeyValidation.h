@@ -23,6 +23,13 @@ class KnownKeys
 		const mrpt::config::CLoadableOptions& opts, const std::string& section);
 	void add(const std::string& section, const std::string& key);
 
+	/** Records that `oldSection`'s `oldKey` is now `newSection`'s `newKey`,
+	 * so an INI written for an older version gets told where it went. */
+	void addMoved(const std::string& oldSection, const std::string& oldKey, const std::string& newSection,
+		const std::string& newKey);
+	/** "[new_section] new_key" for a moved key, else "". */
+	std::string movedTo(const std::string& section, const std::string& key) const;
+
 	bool hasSection(const std::string& section) const;
 	bool has(const std::string& section, const std::string& key) const;
 	std::vector<std::string> sections() const;
@@ -32,11 +39,13 @@ class KnownKeys
 	/** lower-case section -> (written section name, keys as written) */
 	std::map<std::string, std::pair<std::string, std::vector<std::string>>>
 		m_sections;
+	/** lower-case "section/key" -> "[new_section] new_key" */
+	std::map<std::string, std::string> m_moved;
 };
 
 /** Throws ConfigError naming the first unknown key (or unknown section) in
  * any section whose name starts with `ownedPrefix` (case-insensitive),
- * together with the closest known key. Other sections are left alone, so
+ * together with where it moved or the closest known key. Other sections are left alone, so
  * one INI can also hold e.g. rbpf-slam's sections. */
 void checkNoUnknownKeys(
 	const mrpt::config::CConfigFileBase& cfg, const KnownKeys& known,

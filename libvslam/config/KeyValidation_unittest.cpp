@@ -68,3 +68,25 @@ TEST(KeyValidation, NamesUnknownVslamSection)
 			<< e.what();
 	}
 }
+
+TEST(KeyValidation, SaysWhereAMovedKeyWentInAnOldSection)
+{
+	KnownKeys k = known();
+	k.addMoved("vslam_frontend", "creation_views", "vslam_landmark_creation", "views");
+	mrpt::config::CConfigFileMemory c("[vslam_frontend]\ncreation_views = 4\n");
+	try
+	{
+		checkNoUnknownKeys(c, k);
+		FAIL() << "expected ConfigError";
+	}
+	catch (const ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("'creation_views' of section [vslam_frontend] is now "
+											 "[vslam_landmark_creation] views"),
+			std::string::npos)
+			<< e.what();
+	}
+	// A key of the old section that never existed is still an unknown section.
+	mrpt::config::CConfigFileMemory other("[vslam_frontend]\nno_such_key = 1\n");
+	EXPECT_THROW(checkNoUnknownKeys(other, k), ConfigError);
+}

@@ -154,6 +154,13 @@ int64_t readInt(
 	return i;
 }
 
+int readCount(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, int defaultValue, double lo, double hi)
+{
+	return static_cast<int>(readInt(cfg, section, key, defaultValue, Range::closed(lo, hi)));
+}
+
 bool readBool(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	const std::string& key, bool defaultValue)

@@ -76,6 +76,11 @@ int64_t readInt(
 	const std::string& key, int64_t defaultValue,
 	const Range& range = Range::any());
 
+/** readInt() for an int-sized count within [lo, hi]. */
+int readCount(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, int defaultValue, double lo, double hi);
+
 bool readBool(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	const std::string& key, bool defaultValue);

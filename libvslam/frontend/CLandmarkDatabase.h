@@ -12,8 +12,8 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorIndex.h>
 #include <libvslam/frontend/ImageFeatures.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/frontend/VisualLandmarkModel.h>
+#include <mrpt/config/CLoadableOptions.h>
 
 #include <cstdint>
 #include <map>
@@ -25,7 +25,37 @@ namespace vslam
 class CLandmarkDatabase
 {
    public:
-	explicit CLandmarkDatabase(const TVisualFrontEndOptions& options);
+	/** INI section [vslam_landmark_database]: how descriptors are stored and
+	 * searched, which landmarks become candidates, and the map's bounds. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_landmark_database";
+
+		TDescriptorSearch search;  //!< INI keys search_index, search_checks, search_bbf_compared
+		/** The k-d tree votes in a random projection of the descriptors to this
+		 * many dimensions (signed bytes; 128: no projection). Candidates are
+		 * then verified with the stored descriptors. */
+		int search_dims = 16;
+		/** How descriptors are stored and matched (DescriptorCodec.h): float,
+		 * uint8 (128 bytes), uint4 (64 bytes, square-root scale) or projected
+		 * (descriptor_dims signed bytes). */
+		std::string descriptor_storage = "uint8";
+		int descriptor_dims = 32;
+		/** A landmark is a candidate when this many image features vote for it. */
+		int min_votes = 10;
+		int max_candidates = 5;  //!< candidates tried per image
+		/** Most landmarks kept (0: no limit); beyond it the least useful go. */
+		int max_landmarks = 0;
+		/** A landmark expected in view (its frame within the camera's reach)
+		 * but not recognized this many times in a row is removed (0: never). */
+		int prune_after_misses = 0;
+
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	/** `matchRatio`: the features' ratio test, for the candidates' votes. */
+	CLandmarkDatabase(const TOptions& options, double matchRatio);
 	~CLandmarkDatabase();
 	CLandmarkDatabase(const CLandmarkDatabase&) = delete;
 	CLandmarkDatabase& operator=(const CLandmarkDatabase&) = delete;
@@ -51,9 +81,9 @@ class CLandmarkDatabase
 		int64_t id = 0;
 		int votes = 0;
 	};
-	/** Landmarks with at least recognition_min_votes votes from the image's
-	 * features (`image.codes`, see encode()), most votes first, at most
-	 * recognition_max_candidates. */
+	/** Landmarks with at least min_votes votes from the image's features
+	 * (`image.codes`, see encode()), most votes first, at most
+	 * max_candidates. */
 	std::vector<Candidate> candidates(const ImageFeatures& image) const;
 
 	/** Sets image.codes and image.searchCodes: its descriptors in the
@@ -74,7 +104,8 @@ class CLandmarkDatabase
 	/** A new index over the live landmarks (after many removals). */
 	void rebuildIndex();
 
-	TVisualFrontEndOptions m_options;
+	TOptions m_options;
+	double m_matchRatio;
 	DescriptorCodec m_codec;  //!< stored descriptors (verification)
 	DescriptorCodec m_searchCodec;  //!< the index's space
 	std::map<int64_t, VisualLandmarkModel> m_landmarks;  // ordered: deterministic iteration

@@ -1,7 +1,6 @@
 #include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/frontend/LandmarkAppearance.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
-#include <libvslam/models/CMotionModel.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
@@ -37,14 +36,6 @@ std::string withoutNumbers(const std::string& text)
 	return out;
 }
 
-TScaleRefinementSettings scaleSettings(const TVisualFrontEndOptions& o)
-{
-	TScaleRefinementSettings s;
-	// 0 left unresolved (options not read from an INI): the motion model's default.
-	s.odometrySigma = o.scale_odometry_sigma > 0 ? o.scale_odometry_sigma : CMotionModel::TOptions().sigma_T;
-	return s;
-}
-
 /** A landmark is expected in view when the robot is near where it was
  * built and looks the same way (odometry only: the front-end has no map). */
 bool expectedInView(const mrpt::poses::CPose2D& createdAt, const mrpt::poses::CPose2D& now)
@@ -55,8 +46,13 @@ bool expectedInView(const mrpt::poses::CPose2D& createdAt, const mrpt::poses::CP
 }
 }  // namespace
 
-CVisualFrontEnd::CVisualFrontEnd(const TVisualFrontEndOptions& options)
-	: m_options(options), m_extractor(options), m_database(options)
+CVisualFrontEnd::CVisualFrontEnd(const TOptions& options)
+	: m_options(options),
+	  m_extractor(options.features),
+	  m_database(options.database, options.features.match_ratio),
+	  m_creator(options.creator()),
+	  m_recognizer(options.recognizer()),
+	  m_headingEstimator(options.headingEstimator())
 {
 }
 
@@ -69,11 +65,11 @@ void CVisualFrontEnd::loadMap(const CVSlamMap& map, const mrpt::poses::CPose2D& 
 			inWorld[e.id] = mrpt::poses::CPose2D(e.mean[0], e.mean[1], e.mean[2]);
 			m_nextId = std::max(m_nextId, e.id + 1);  // also for a map without appearances
 		}
-	const TScaleRefinementSettings settings = scaleSettings(m_options);
+	const TScaleRefinementSettings settings = m_options.scale.settings();
 	std::vector<VisualLandmarkModel> landmarks;
 	for (const auto& record : map.appearances)
 	{
-		landmarks.push_back(landmarkOf(record, m_options.scale_refinement ? &settings : nullptr));
+		landmarks.push_back(landmarkOf(record, m_options.scale.enabled ? &settings : nullptr));
 		// Where the map has it, not where the old run's odometry had it.
 		landmarks.back().createdAtOdometry = worldInOdometry + inWorld.at(record.id);
 	}
@@ -84,7 +80,7 @@ void CVisualFrontEnd::loadMap(const CVSlamMap& map, const mrpt::poses::CPose2D& 
 void CVisualFrontEnd::saveMap(CVSlamMap& map) const
 {
 	for (const auto& [id, lm] : m_database.landmarks()) map.appearances.push_back(appearanceOf(lm));
-	map.descriptorStorage = m_options.descriptor_storage;
+	map.descriptorStorage = m_options.database.descriptor_storage;
 	map.nextVisualLandmarkId = m_nextId;
 	map.hasCamera = m_camera.has_value();
 	if (m_camera) map.camera = *m_camera;
@@ -121,7 +117,7 @@ CreationView CVisualFrontEnd::viewOf(
 	auto t = Clock::now();
 	const cv::Mat pixels = obs.image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
 	if (pixels.empty()) throw std::runtime_error(what + ": the image is empty or could not be loaded");
-	const auto calibration = ImageCalibration::from(obs.cameraParams, pixels.cols, pixels.rows, m_options, what);
+	const auto calibration = CImageCalibration::from(obs.cameraParams, pixels.cols, pixels.rows, m_options.camera, what);
 	if (!m_camera) m_camera = obs.cameraParams;
 	CreationView view;
 	view.features = m_extractor.extract(pixels, calibration);
@@ -130,7 +126,7 @@ CreationView CVisualFrontEnd::viewOf(
 	view.cameraPose = mrpt::poses::CPose3D(odometryPose) + obs.cameraPose;
 	out.features = view.features.size();
 	out.seconds.features = since(t);
-	if (m_options.heading_change)
+	if (m_options.heading.enabled)
 	{
 		t = Clock::now();
 		measureHeadingChange(obs, view.features, odometryPose, out);
@@ -171,14 +167,14 @@ CVisualFrontEnd::Recognitions CVisualFrontEnd::recognize(const CreationView& vie
 	for (const auto& c : candidates)
 	{
 		VisualLandmarkModel* lm = m_database.find(c.id);
-		auto m = recognizeLandmark(view.features, *lm, obs.cameraPose, m_options);
+		auto m = m_recognizer.recognize(view.features, *lm, obs.cameraPose);
 		if (!m) continue;
 		lm->recognitions++;
 		lm->missesInARow = 0;
 		lm->lastSeen = view.time;
 		recognized.ids.push_back(c.id);
 		if (!reportable(*lm, *m, view.time, odometryPose)) continue;  // recognized: no new landmark here
-		if (m_options.scale_refinement && !m_mapFixed) refineScale(*lm, *m, odometryPose, obs.cameraPose);
+		if (m_options.scale.enabled && !m_mapFixed) refineScale(*lm, *m, odometryPose, obs.cameraPose);
 		lm->lastReported = ReportedRecognition{view.time, odometryPose.asTPose(), m->landmarkInRobot.asTPose()};
 		out.measurements.push_back(measurementOf(*m, obs));
 	}
@@ -194,7 +190,7 @@ bool CVisualFrontEnd::reportable(
 		m_poorlyConditioned++;
 	// ... nor one where the odometry since its last recognition does not put it.
 	else if (!agreesWithOdometry(
-				 landmark.lastReported, time, odometryPose, m.landmarkInRobot, m_options.recognition_odometry_gate))
+				 landmark.lastReported, time, odometryPose, m.landmarkInRobot, m_options.recognition.odometry_gate))
 		m_inconsistent++;
 	else
 		return true;
@@ -211,12 +207,12 @@ void CVisualFrontEnd::collectForCreation(CreationView view, const Recognitions& 
 		return;
 	}
 	const bool moved =
-		m_views.empty() || (odometryPose - m_views.back().second).norm() >= m_options.creation_min_baseline;
+		m_views.empty() || (odometryPose - m_views.back().second).norm() >= m_options.creation.min_baseline;
 	if (moved) m_views.emplace_back(std::move(view), odometryPose);
 	while (!m_views.empty() &&
-		(odometryPose - m_views.front().second).norm() > m_options.creation_max_baseline * (m_options.creation_views - 1))
+		(odometryPose - m_views.front().second).norm() > m_options.creation.max_baseline * (m_options.creation.views - 1))
 		m_views.pop_front();
-	if (static_cast<int>(m_views.size()) >= m_options.creation_views) createFromViews(obs, odometryPose, out);
+	if (static_cast<int>(m_views.size()) >= m_options.creation.views) createFromViews(obs, odometryPose, out);
 }
 
 void CVisualFrontEnd::createFromViews(
@@ -224,12 +220,12 @@ void CVisualFrontEnd::createFromViews(
 {
 	std::vector<const CreationView*> ptrs;
 	double baseline = 0;
-	for (size_t i = m_views.size() - m_options.creation_views; i < m_views.size(); i++)
+	for (size_t i = m_views.size() - m_options.creation.views; i < m_views.size(); i++)
 	{
 		ptrs.push_back(&m_views[i].first);
 		if (ptrs.size() > 1) baseline += (m_views[i].second - m_views[i - 1].second).norm();
 	}
-	auto result = createLandmark(ptrs, obs.cameraPose, m_options);
+	auto result = m_creator.create(ptrs, obs.cameraPose);
 	m_creationAttempts++;
 	if (!result.landmark)
 	{
@@ -250,7 +246,7 @@ void CVisualFrontEnd::createFromViews(
 	c->sensorPoseOnRobot = obs.cameraPose;
 	out.created.push_back(c);
 	result.landmark->createdAtOdometry = odometryPose;
-	if (m_options.scale_refinement) result.landmark->scale = LandmarkScaleTrack(baseline, scaleSettings(m_options));
+	if (m_options.scale.enabled) result.landmark->scale = CLandmarkScaleTrack(baseline, m_options.scale.settings());
 	m_database.insert(std::move(*result.landmark));
 	m_views.clear();
 }
@@ -265,8 +261,7 @@ void CVisualFrontEnd::measureHeadingChange(const mrpt::obs::CObservationImage& o
 		// Backwards (odometry's sign): the chord's direction stays near the heading.
 		const mrpt::poses::CPose2D moved = odometryPose - previous->second.odometryPose;
 		const double chord = moved.x() >= 0 ? moved.norm() : -moved.norm();
-		const auto e = estimateHeadingChange(
-			previous->second.features, features, obs.cameraPose, chord, headingChangeSettings(m_options));
+		const auto e = m_headingEstimator.estimate(previous->second.features, features, obs.cameraPose, chord);
 		if (e)
 		{
 			auto h = CObservationHeadingChange::Create();
@@ -316,16 +311,16 @@ void CVisualFrontEnd::prune(
 	const mrpt::poses::CPose2D& odometryPose, const std::vector<int64_t>& recognized, Output& out)
 {
 	std::vector<int64_t> remove;
-	if (m_options.prune_after_misses > 0)
+	if (m_options.database.prune_after_misses > 0)
 		for (const auto& [id, lm] : m_database.landmarks())
 		{
 			if (std::find(recognized.begin(), recognized.end(), id) != recognized.end()) continue;
 			if (!expectedInView(lm.createdAtOdometry, odometryPose)) continue;
 			auto* l = m_database.find(id);
-			if (++l->missesInARow >= m_options.prune_after_misses) remove.push_back(id);
+			if (++l->missesInARow >= m_options.database.prune_after_misses) remove.push_back(id);
 		}
-	if (m_options.max_landmarks > 0 &&
-		static_cast<int>(m_database.size() - remove.size()) > m_options.max_landmarks)
+	if (m_options.database.max_landmarks > 0 &&
+		static_cast<int>(m_database.size() - remove.size()) > m_options.database.max_landmarks)
 	{
 		// Over the cap: the longest unseen go first (a new landmark counts as
 		// seen now), among equals the least recognized.
@@ -334,7 +329,7 @@ void CVisualFrontEnd::prune(
 			if (std::find(remove.begin(), remove.end(), id) == remove.end())
 				rank.push_back({{lm.lastSeen, lm.recognitions}, id});
 		std::sort(rank.begin(), rank.end());
-		const size_t excess = m_database.size() - remove.size() - static_cast<size_t>(m_options.max_landmarks);
+		const size_t excess = m_database.size() - remove.size() - static_cast<size_t>(m_options.database.max_landmarks);
 		for (size_t i = 0; i < excess; i++) remove.push_back(rank[i].second);
 	}
 	for (int64_t id : remove)

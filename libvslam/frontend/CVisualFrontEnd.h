@@ -11,12 +11,18 @@
  * heading_change, each image is also matched with the same camera's
  * previous one for the robot's heading change in between
  * (CObservationHeadingChange, HeadingChange.h).
+ * Each component owns its options and INI section; TOptions composes them
+ * and is the one place where they share a value (the features' ratio test).
  */
 #include <libvslam/frontend/CLandmarkDatabase.h>
 #include <libvslam/frontend/HeadingChange.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/config/KeyValidation.h>
+#include <libvslam/config/Overrides.h>
+#include <libvslam/frontend/ImageFeatures.h>
+#include <libvslam/frontend/LandmarkScaleTrack.h>
+#include <libvslam/frontend/PinholeCamera.h>
 #include <libvslam/obs/CObservationHeadingChange.h>
 #include <libvslam/obs/CObservationLandmarkCreated.h>
 #include <libvslam/obs/CObservationVisualLandmark.h>
@@ -35,7 +41,41 @@ namespace vslam
 class CVisualFrontEnd
 {
    public:
-	explicit CVisualFrontEnd(const TVisualFrontEndOptions& options);
+	/** The options of every front-end component, each read from its own
+	 * INI section. */
+	struct TOptions
+	{
+		CFeatureExtractor::TOptions features;
+		CImageCalibration::TOptions camera;
+		CLandmarkCreator::TOptions creation;
+		CLandmarkScaleTrack::TOptions scale;
+		CLandmarkRecognizer::TOptions recognition;
+		CLandmarkDatabase::TOptions database;
+		CHeadingChangeEstimator::TOptions heading;
+
+		/** Reads every section (absent keys keep their defaults). */
+		void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
+		/** Writes every section with comments. */
+		void saveToConfig(mrpt::config::CConfigFileBase& cfg) const;
+		/** Adds every section's keys to `known`, and where the keys of the
+		 * former single [vslam_frontend] section went. */
+		void registerKnownKeys(config::KnownKeys& known) const;
+		/** Scale refinement's odometry noise from the motion model where unset. */
+		void takeOdometryNoiseFrom(double motionModelSigmaT) { scale.takeOdometryNoiseFrom(motionModelSigmaT); }
+
+		// The components, wired to the options they share.
+		CLandmarkCreator creator() const
+		{
+			return CLandmarkCreator(creation, features.match_ratio, recognition.structure_weighted);
+		}
+		CLandmarkRecognizer recognizer() const { return CLandmarkRecognizer(recognition, features.match_ratio); }
+		CHeadingChangeEstimator headingEstimator() const
+		{
+			return CHeadingChangeEstimator(heading, features.match_ratio);
+		}
+	};
+
+	explicit CVisualFrontEnd(const TOptions& options);
 
 	struct StageSeconds
 	{
@@ -81,7 +121,7 @@ class CVisualFrontEnd
 	/** Recognitions dropped for a degenerate pose solve (no uncertainty). */
 	size_t poorlyConditionedRecognitions() const { return m_poorlyConditioned; }
 	/** Recognitions not reported because the odometry since the landmark's
-	 * last one does not put it there (recognition_odometry_gate_s). */
+	 * last one does not put it there ([vslam_recognition] odometry_gate_s). */
 	size_t inconsistentRecognitions() const { return m_inconsistent; }
 	/** Landmark creations tried, and those rejected by reason (the
 	 * creator's reason with its numbers replaced by "N"). */
@@ -93,7 +133,7 @@ class CVisualFrontEnd
 
    private:
 	/** This image's features (encoded for the database) and camera pose;
-	 * with heading_change, also the heading change from the previous image. */
+	 * with the heading measurement, also the heading change from the previous image. */
 	CreationView viewOf(const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose,
 		const std::string& what, Output& out);
 	/** The landmarks recognized in the image (IDs); the recognitions fit to
@@ -108,10 +148,10 @@ class CVisualFrontEnd
 	bool reportable(const VisualLandmarkModel& landmark, const VisualMeasurement& m, double time,
 		const mrpt::poses::CPose2D& odometryPose);
 	/** Keeps the view for creation when no landmark is recognized,
-	 * and builds a landmark once there are creation_views along the motion. */
+	 * and builds a landmark once there are enough views along the motion. */
 	void collectForCreation(CreationView view, const Recognitions& recognized, const mrpt::obs::CObservationImage& obs,
 		const mrpt::poses::CPose2D& odometryPose, Output& out);
-	/** A landmark from the newest creation_views views; on success it goes
+	/** A landmark from the newest views; on success it goes
 	 * to the database and out.created, else the oldest view is dropped. */
 	void createFromViews(const mrpt::obs::CObservationImage& obs, const mrpt::poses::CPose2D& odometryPose, Output& out);
 	/** Refines the scale of the landmark just recognized in `m` from this
@@ -132,9 +172,12 @@ class CVisualFrontEnd
 		mrpt::Clock::time_point timestamp;
 	};
 
-	TVisualFrontEndOptions m_options;
-	FeatureExtractor m_extractor;
+	TOptions m_options;
+	CFeatureExtractor m_extractor;
 	CLandmarkDatabase m_database;
+	CLandmarkCreator m_creator;
+	CLandmarkRecognizer m_recognizer;
+	CHeadingChangeEstimator m_headingEstimator;
 	/** Recent unrecognized views for landmark creation, oldest first, with
 	 * the odometry pose each was taken at. */
 	std::deque<std::pair<CreationView, mrpt::poses::CPose2D>> m_views;
@@ -152,4 +195,11 @@ class CVisualFrontEnd
 	std::map<std::string, PreviousImage> m_previousImage;  //!< by sensor label
 	size_t m_headingChangesMeasured = 0, m_headingChangesFailed = 0;
 };
+
+/** The front-end options of an INI file ("" for none) with `--set`
+ * overrides, strictly (unknown keys and bad values are ConfigError naming
+ * the file), with the odometry noise of its [vslam_motion_model] where
+ * scale refinement's is 0. Used by the apps that run the front-end alone. */
+CVisualFrontEnd::TOptions loadFrontEndOptions(
+	const std::string& iniFile, const std::vector<config::Override>& overrides);
 }  // namespace vslam

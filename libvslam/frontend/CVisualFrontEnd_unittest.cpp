@@ -25,7 +25,7 @@ struct LapsResult
 	std::vector<double> translationErrors, headingErrors;
 	std::vector<std::string> rows;  //!< every output, for determinism
 	size_t landmarksInDatabase = 0, pruned = 0;
-	size_t inconsistent = 0;  //!< recognitions not reported for recognition_odometry_gate_s
+	size_t inconsistent = 0;  //!< recognitions not reported for [vslam_recognition] odometry_gate_s
 	/** Per landmark, measured over true range of each measurement from
 	 * beyond 0.5 m in the last lap: how far off the landmark's scale is. */
 	std::map<int64_t, std::vector<double>> rangeRatiosLastLap;
@@ -35,7 +35,7 @@ struct LapsResult
 /** `odometrySigma`: the odometry the front-end gets is the true path plus
  * a random walk of this many m/sqrt(m) (0: exact). `odometryJumpFrame`:
  * from that image on, the odometry is 1 m to the left of that. */
-LapsResult driveLaps(const TVisualFrontEndOptions& options, double laps, double blackoutAfterLaps = 1e9,
+LapsResult driveLaps(const CVisualFrontEnd::TOptions& options, double laps, double blackoutAfterLaps = 1e9,
 	double odometrySigma = 0, int odometryJumpFrame = -1)
 {
 	vslam::testing::RoomRenderer room(5.0, 4.0, 2.5, 42);
@@ -118,7 +118,7 @@ void expectTruePosesOnTheSecondLap(const LapsResult& run)
 
 TEST(CVisualFrontEnd, CreatesOnTheFirstLapRecognizesOnTheSecondWithTheTruePose)
 {
-	const LapsResult run = driveLaps(TVisualFrontEndOptions(), 2);
+	const LapsResult run = driveLaps(CVisualFrontEnd::TOptions(), 2);
 	expectTruePosesOnTheSecondLap(run);
 	EXPECT_EQ(run.withPredictedCovariance, run.translationErrors.size());
 }
@@ -127,8 +127,8 @@ TEST(CVisualFrontEnd, WithoutSiftUpsamplingStillRecognizesWithTheTruePose)
 {
 	// The faster SIFT mode finds fewer features at 320x240 (no octave on the
 	// doubled image); the room's texture is coarse enough for it.
-	TVisualFrontEndOptions options;
-	options.sift_upsample = false;
+	CVisualFrontEnd::TOptions options;
+	options.features.sift_upsample = false;
 	expectTruePosesOnTheSecondLap(driveLaps(options, 2));
 }
 
@@ -147,10 +147,10 @@ TEST(CVisualFrontEnd, LaterSightingsCorrectTheScaleOfLandmarksBuiltOnNoisyOdomet
 	// Odometry with the paper's sigma_T: each landmark's 0.3 m creation
 	// baseline gives it a scale error of several percent; the sightings of
 	// two more laps, against the same noisy odometry, bring it down.
-	TVisualFrontEndOptions o;
-	o.scale_refinement = false;
+	CVisualFrontEnd::TOptions o;
+	o.scale.enabled = false;
 	const LapsResult asBuilt = driveLaps(o, 3, 1e9, 0.05);
-	o.scale_refinement = true;
+	o.scale.enabled = true;
 	const LapsResult refined = driveLaps(o, 3, 1e9, 0.05);
 	ASSERT_GE(asBuilt.rangeRatiosLastLap.size(), 4u);
 	ASSERT_GE(refined.rangeRatiosLastLap.size(), 4u);
@@ -181,11 +181,11 @@ TEST(CVisualFrontEnd, ARecognitionTheOdometryRulesOutCountsAsRecognizedButIsNotR
 	// passed, the outputs are those without the gate; and no landmark is built
 	// for the dropped ones. (The scale track is off: it would take the jump
 	// for a scale error.)
-	TVisualFrontEndOptions o;
-	o.scale_refinement = false;
+	CVisualFrontEnd::TOptions o;
+	o.scale.enabled = false;
 	const int jump = 110, afterHorizon = jump + 11;  // of about 168 images
 	const LapsResult ungated = driveLaps(o, 2, 1e9, 0, jump);
-	o.recognition_odometry_gate.horizon = 5;
+	o.recognition.odometry_gate.horizon = 5;
 	const LapsResult gated = driveLaps(o, 2, 1e9, 0, jump);
 	std::cout << "recognitions dropped after the odometry's jump: " << gated.inconsistent << " of "
 			  << measurementRows(ungated, jump, afterHorizon).size() << "\n";
@@ -202,15 +202,15 @@ TEST(CVisualFrontEnd, ARecognitionTheOdometryRulesOutCountsAsRecognizedButIsNotR
 
 TEST(CVisualFrontEnd, SameImagesSameOutputs)
 {
-	const auto first = driveLaps(TVisualFrontEndOptions(), 1);
+	const auto first = driveLaps(CVisualFrontEnd::TOptions(), 1);
 	EXPECT_GT(first.rows.size(), 10u);
-	EXPECT_EQ(first.rows, driveLaps(TVisualFrontEndOptions(), 1).rows);
+	EXPECT_EQ(first.rows, driveLaps(CVisualFrontEnd::TOptions(), 1).rows);
 }
 
 TEST(CVisualFrontEnd, TheLandmarkCapBoundsTheMap)
 {
-	TVisualFrontEndOptions o;
-	o.max_landmarks = 3;
+	CVisualFrontEnd::TOptions o;
+	o.database.max_landmarks = 3;
 	const LapsResult run = driveLaps(o, 1);
 	EXPECT_LE(run.landmarksInDatabase, 3u);
 	EXPECT_GT(run.created, 3u);
@@ -221,12 +221,12 @@ TEST(CVisualFrontEnd, LandmarksExpectedButNotSeenArePruned)
 	// A camera blackout on the second lap: every landmark is expected where
 	// it was made and missed there, so with prune_after_misses = 2 all go;
 	// without pruning they all stay.
-	TVisualFrontEndOptions o;
+	CVisualFrontEnd::TOptions o;
 	const LapsResult kept = driveLaps(o, 1.9, 1.0);
 	EXPECT_GE(kept.created, 4u);
 	EXPECT_EQ(kept.pruned, 0u);
 	EXPECT_EQ(kept.landmarksInDatabase, kept.created);
-	o.prune_after_misses = 2;
+	o.database.prune_after_misses = 2;
 	const LapsResult pruned = driveLaps(o, 1.9, 1.0);
 	EXPECT_EQ(pruned.created, kept.created);
 	EXPECT_EQ(pruned.landmarksInDatabase + pruned.pruned, pruned.created);

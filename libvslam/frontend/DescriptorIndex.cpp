@@ -1,7 +1,6 @@
 #include <libvslam/frontend/BestBinFirstDescriptorIndex.h>
 #include <libvslam/frontend/DescriptorIndex.h>
 #include <libvslam/frontend/FlannDescriptorIndex.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 
 #include <algorithm>
 #include <iterator>
@@ -16,14 +15,11 @@ namespace
 constexpr int kFlannTrees = 1;
 }  // namespace
 
-std::unique_ptr<DescriptorIndex> DescriptorIndex::create(
-	const TVisualFrontEndOptions& options, const DescriptorCodec& codec)
+std::unique_ptr<DescriptorIndex> DescriptorIndex::create(const TDescriptorSearch& search, const DescriptorCodec& codec)
 {
-	if (options.search_index == "flann")
-		return std::make_unique<FlannDescriptorIndex>(codec, kFlannTrees, options.search_checks);
-	if (options.search_index == "bbf")
-		return std::make_unique<BestBinFirstDescriptorIndex>(codec, options.search_bbf_compared);
-	throw std::invalid_argument("unknown search_index '" + options.search_index + "' (flann | bbf)");
+	if (search.index == "flann") return std::make_unique<FlannDescriptorIndex>(codec, kFlannTrees, search.checks);
+	if (search.index == "bbf") return std::make_unique<BestBinFirstDescriptorIndex>(codec, search.bbf_compared);
+	throw std::invalid_argument("unknown search_index '" + search.index + "' (flann | bbf)");
 }
 
 void DescriptorIndex::add(int64_t owner, const cv::Mat& siftDescriptors)

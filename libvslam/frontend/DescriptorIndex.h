@@ -7,7 +7,7 @@
  * (CLandmarkDatabase) rebuilds the index, which it does once
  * removedRows() passes half of rows().
  *
- * Back-ends (`[vslam_frontend] search_index`):
+ * Back-ends (`[vslam_landmark_database] search_index`):
  *  - flann (FlannDescriptorIndex.h): OpenCV FLANN randomized k-d trees
  *    searched with a bounded number of leaf checks, so a query costs about
  *    the same whatever the map's size;
@@ -22,12 +22,23 @@
 #include <limits>
 #include <memory>
 #include <utility>
+#include <string>
 #include <vector>
 
 namespace vslam
 {
 class DescriptorCodec;
-struct TVisualFrontEndOptions;
+
+/** Which index, and how much of it a query searches. */
+struct TDescriptorSearch
+{
+	/** "flann" (OpenCV FLANN randomized k-d trees, bounded checks: cost per
+	 * query nearly independent of the map size) or "bbf" (k-d trees with leaf
+	 * buckets searched best bin first, a bounded number of codes compared). */
+	std::string index = "flann";
+	int checks = 32;  //!< flann: leaves checked per query and level
+	int bbf_compared = 128;  //!< bbf: codes compared per query and level (whole leaves of 8)
+};
 
 /** A query's nearest rows, nearest first; dist are squared L2. */
 struct NearestLandmarkRows
@@ -44,10 +55,9 @@ class DescriptorIndex
 	explicit DescriptorIndex(const DescriptorCodec& codec) : m_codec(codec) {}
 	virtual ~DescriptorIndex() = default;
 
-	/** The back-end `options.search_index` names, over codes of `codec`
-	 * (which must outlive the index). */
-	static std::unique_ptr<DescriptorIndex> create(
-		const TVisualFrontEndOptions& options, const DescriptorCodec& codec);
+	/** The back-end `search.index` names, over codes of `codec` (which
+	 * must outlive the index). */
+	static std::unique_ptr<DescriptorIndex> create(const TDescriptorSearch& search, const DescriptorCodec& codec);
 
 	/** Adds a landmark's descriptors (N x 128 SIFT, CV_32F) as N rows. */
 	void add(int64_t owner, const cv::Mat& siftDescriptors);

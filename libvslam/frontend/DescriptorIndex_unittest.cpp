@@ -7,7 +7,6 @@
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorIndex.h>
 #include <libvslam/frontend/FlannDescriptorIndex.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 
 #include <cmath>
 #include <iostream>
@@ -76,11 +75,11 @@ class DescriptorIndexScenario : public ::testing::TestWithParam<Scenario>
    protected:
 	std::unique_ptr<DescriptorIndex> make(const DescriptorCodec& codec) const
 	{
-		TVisualFrontEndOptions options;
-		options.search_index = GetParam().index;
-		options.search_checks = GetParam().checks;
-		options.search_bbf_compared = GetParam().checks;
-		return DescriptorIndex::create(options, codec);
+		TDescriptorSearch search;
+		search.index = GetParam().index;
+		search.checks = GetParam().checks;
+		search.bbf_compared = GetParam().checks;
+		return DescriptorIndex::create(search, codec);
 	}
 };
 class ExactDescriptorIndex : public DescriptorIndexScenario
@@ -171,12 +170,12 @@ TEST_P(DefaultDescriptorIndex, RecallsTheRightLandmarkAndSkipsRemovedOnes)
 	EXPECT_GT(right, 0.9 * total) << right << " of " << total;
 }
 
-const TVisualFrontEndOptions kDefaults;
+const TDescriptorSearch kDefaults;
 INSTANTIATE_TEST_SUITE_P(BackEnds, ExactDescriptorIndex,
 	::testing::Values(Scenario{"flann", 100000}, Scenario{"bbf", 100000}),
 	[](const auto& info) { return info.param.index; });
 INSTANTIATE_TEST_SUITE_P(BackEnds, DefaultDescriptorIndex,
-	::testing::Values(Scenario{"flann", kDefaults.search_checks}, Scenario{"bbf", kDefaults.search_bbf_compared}),
+	::testing::Values(Scenario{"flann", kDefaults.checks}, Scenario{"bbf", kDefaults.bbf_compared}),
 	[](const auto& info) { return info.param.index; });
 }  // namespace
 
@@ -208,8 +207,8 @@ TEST(FlannDescriptorIndex, LevelsStayLogarithmicAndBuildsAreDeterministic)
 
 TEST(DescriptorIndex, UnknownBackEndIsRejected)
 {
-	TVisualFrontEndOptions options;
-	options.search_index = "lsh";
+	TDescriptorSearch search;
+	search.index = "lsh";
 	const DescriptorCodec codec(DescriptorCodec::Kind::Projected, 16);
-	EXPECT_THROW(DescriptorIndex::create(options, codec), std::invalid_argument);
+	EXPECT_THROW(DescriptorIndex::create(search, codec), std::invalid_argument);
 }

@@ -1,6 +1,6 @@
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/HeadingChange.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <libvslam/models/SE2.h>
 
 #include <Eigen/Cholesky>
@@ -117,13 +117,27 @@ std::optional<ArcFit> fitOnArc(const PlanarEpipolarModel& model, const std::vect
 }
 }  // namespace
 
-HeadingChangeSettings vslam::headingChangeSettings(const TVisualFrontEndOptions& o)
+void CHeadingChangeEstimator::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-	HeadingChangeSettings s;
-	s.matchRatio = o.match_ratio;
-	s.minInliers = o.heading_change_min_inliers;
-	s.inlierPx = o.heading_change_inlier_px;
-	return s;
+	using namespace config;
+	enabled = readBool(c, s, "enabled", enabled);
+	min_inliers = readCount(c, s, "min_inliers", min_inliers, 5, 100000);
+	inlier_px = readDouble(c, s, "inlier_px", inlier_px, Range::positive());
+}
+
+void CHeadingChangeEstimator::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "enabled", enabled, 30, 10,
+		"Measure the heading change from each image to the camera's previous one (for [vslam_heading_change])");
+	c.write(s, "min_inliers", min_inliers, 30, 10, "Feature matches that must fit the motion");
+	c.write(s, "inlier_px", inlier_px, 30, 10, "Epipolar distance of an inlier [px]");
+}
+
+CHeadingChangeEstimator::CHeadingChangeEstimator(const TOptions& options, double matchRatio) : m_options(options)
+{
+	m_settings.matchRatio = matchRatio;
+	m_settings.minInliers = options.min_inliers;
+	m_settings.inlierPx = options.inlier_px;
 }
 
 PlanarEpipolarModel::PlanarEpipolarModel(const mrpt::poses::CPose3D& mount, double chord)

@@ -45,6 +45,7 @@
  * with it.
  */
 #include <libvslam/frontend/ImageFeatures.h>
+#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Core>
@@ -62,10 +63,6 @@ struct HeadingChangeSettings
 	 * which a match's bearing change may differ from the heading change. */
 	double minDepth = 0.2;
 };
-
-struct TVisualFrontEndOptions;
-/** The settings of [vslam_frontend]'s heading_change_* keys. */
-HeadingChangeSettings headingChangeSettings(const TVisualFrontEndOptions& options);
 
 struct HeadingChangeEstimate
 {
@@ -147,4 +144,38 @@ class PlanarEpipolarModel
  * matches fit one (e.g. unrelated images, a blank wall, motion blur). */
 std::optional<HeadingChangeEstimate> estimateHeadingChange(const ImageFeatures& first, const ImageFeatures& second,
 	const mrpt::poses::CPose3D& mount, double chord, const HeadingChangeSettings& settings);
+
+/** Measures the heading change between consecutive images of a camera, for
+ * the filter to fuse into the odometry ([vslam_heading_change]). */
+class CHeadingChangeEstimator
+{
+   public:
+	/** INI section [vslam_heading_measurement]. Not in the paper. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_heading_measurement";
+
+		bool enabled = false;  //!< measure and emit CObservationHeadingChange
+		int min_inliers = 20;  //!< matches that must fit the motion
+		double inlier_px = 1.5;  //!< epipolar distance of an inlier, px
+
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	/** `matchRatio`: the features' ratio test. */
+	CHeadingChangeEstimator(const TOptions& options, double matchRatio);
+	const TOptions& options() const { return m_options; }
+
+	/** estimateHeadingChange() with these options. */
+	std::optional<HeadingChangeEstimate> estimate(const ImageFeatures& first, const ImageFeatures& second,
+		const mrpt::poses::CPose3D& mount, double chord) const
+	{
+		return estimateHeadingChange(first, second, mount, chord, m_settings);
+	}
+
+   private:
+	TOptions m_options;
+	HeadingChangeSettings m_settings;
+};
 }  // namespace vslam

@@ -1,5 +1,5 @@
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/ImageFeatures.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <opencv2/imgproc.hpp>
 
 using namespace vslam;
@@ -10,7 +10,29 @@ namespace
 constexpr double kSiftEdgeThreshold = 10;
 }  // namespace
 
-FeatureExtractor::FeatureExtractor(const TVisualFrontEndOptions& o)
+void CFeatureExtractor::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace config;
+	sift_features = readCount(c, s, "sift_features", sift_features, 0, 100000);
+	sift_contrast_threshold = readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
+	sift_upsample = readBool(c, s, "sift_upsample", sift_upsample);
+	sift_denoise_sigma = readDouble(c, s, "sift_denoise_sigma", sift_denoise_sigma, Range::closed(0, 5));
+	match_ratio = readDouble(c, s, "match_ratio", match_ratio, {0, 1, false, true});
+}
+
+void CFeatureExtractor::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "sift_features", sift_features, 30, 10, "Strongest SIFT features kept per image (0: all)");
+	c.write(s, "sift_contrast_threshold", sift_contrast_threshold, 30, 10, "SIFT contrast threshold");
+	c.write(s, "sift_denoise_sigma", sift_denoise_sigma, 30, 10,
+		"Gaussian blur of the image before SIFT against pixel noise [px std] (0: none)");
+	c.write(s, "sift_upsample", sift_upsample, 30, 10,
+		"SIFT's first octave on the image doubled (true: finest features) or as it is (false: about 2x faster)");
+	c.write(s, "match_ratio", match_ratio, 30, 10,
+		"Ratio test of every feature match (creation, candidates, recognition, heading change): best / second-best distance below this");
+}
+
+CFeatureExtractor::CFeatureExtractor(const TOptions& o)
 	: m_sift(cv::SIFT::create(o.sift_features, 3, o.sift_contrast_threshold, kSiftEdgeThreshold)),
 	  m_upsample(o.sift_upsample),
 	  m_denoiseSigma(o.sift_denoise_sigma)
@@ -26,7 +48,7 @@ namespace
 constexpr float kOpenCvUpsamplingShift = 0.25f;
 }  // namespace
 
-std::vector<cv::Point2f> FeatureExtractor::detect(const cv::Mat& grey, cv::Mat& descriptors) const
+std::vector<cv::Point2f> CFeatureExtractor::detect(const cv::Mat& grey, cv::Mat& descriptors) const
 {
 	std::vector<cv::KeyPoint> keypoints;
 	std::vector<cv::Point2f> pixels;
@@ -54,7 +76,7 @@ std::vector<cv::Point2f> FeatureExtractor::detect(const cv::Mat& grey, cv::Mat& 
 	return pixels;
 }
 
-ImageFeatures FeatureExtractor::extract(const cv::Mat& image, const ImageCalibration& calib) const
+ImageFeatures CFeatureExtractor::extract(const cv::Mat& image, const CImageCalibration& calib) const
 {
 	cv::Mat grey;
 	if (image.channels() == 1)

@@ -3,6 +3,7 @@
  * SIFT features of one image: undistorted pixel positions and descriptors
  * (one CV_32F row of 128 each). */
 #include <libvslam/frontend/PinholeCamera.h>
+#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/img/CImage.h>
 #include <opencv2/core.hpp>
 #include <opencv2/features2d.hpp>
@@ -11,8 +12,6 @@
 
 namespace vslam
 {
-struct TVisualFrontEndOptions;
-
 struct ImageFeatures
 {
 	PinholeCamera camera;
@@ -29,12 +28,37 @@ struct ImageFeatures
 
 /** Detects SIFT features in an image of any size, colour or grey, at
  * their true pixel positions (pixel centres at integer coordinates). */
-class FeatureExtractor
+class CFeatureExtractor
 {
    public:
-	explicit FeatureExtractor(const TVisualFrontEndOptions& options);
+	/** INI section [vslam_features]: SIFT, and the ratio test every
+	 * descriptor match of the front-end passes. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_features";
+
+		int sift_features = 600;  //!< strongest features kept per image (0: all)
+		double sift_contrast_threshold = 0.03;
+		/** SIFT's first octave on the image doubled (OpenCV's way: the finest
+		 * features), or on the image as it is (false: about half the time, and
+		 * fewer features on small images). */
+		bool sift_upsample = true;
+		/** Gaussian blur (std, px) of the image before SIFT: a cheap camera's
+		 * pixel noise and JPEG blocks make fine-scale extrema that do not repeat
+		 * from one image to the next; a slight blur takes them out (0: none). */
+		double sift_denoise_sigma = 0;
+		/** Lowe's ratio test between the best and second-best match, for
+		 * every matching of these features (creation, candidates,
+		 * recognition, heading change). */
+		double match_ratio = 0.8;
+
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	explicit CFeatureExtractor(const TOptions& options);
 	/** Features of `image`; `calibration` undistorts them. */
-	ImageFeatures extract(const cv::Mat& image, const ImageCalibration& calibration) const;
+	ImageFeatures extract(const cv::Mat& image, const CImageCalibration& calibration) const;
 
    private:
 	/** Raw (distorted) pixel positions and descriptors of a grey image. */

@@ -1,11 +1,10 @@
-/** Where FeatureExtractor puts its features: at their true pixel positions,
+/** Where CFeatureExtractor puts its features: at their true pixel positions,
  * in either SIFT mode. A feature's position is checked without knowing where
  * SIFT should find it: the image turned by 180 degrees has the same
  * features, each at (W - 1 - x, H - 1 - y), so any constant offset in the
  * reported positions shows as twice itself. */
 #include <gtest/gtest.h>
 #include <libvslam/frontend/ImageFeatures.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -26,13 +25,13 @@ cv::Mat texturedImage(int cols, int rows)
 	return image;
 }
 
-ImageCalibration calibrationOf(int cols, int rows, const TVisualFrontEndOptions& o)
+CImageCalibration calibrationOf(int cols, int rows)
 {
 	mrpt::img::TCamera camera;
 	camera.ncols = cols;
 	camera.nrows = rows;
 	camera.setIntrinsicParamsFromValues(300, 300, (cols - 1) / 2.0, (rows - 1) / 2.0);
-	return ImageCalibration::from(camera, cols, rows, o, "test");
+	return CImageCalibration::from(camera, cols, rows, CImageCalibration::TOptions(), "test");
 }
 
 struct Offsets
@@ -45,10 +44,10 @@ struct Offsets
  * the image and in the image turned by 180 degrees: twice the offset. */
 Offsets twiceTheOffset(int cols, int rows, bool upsample)
 {
-	TVisualFrontEndOptions o;
+	CFeatureExtractor::TOptions o;
 	o.sift_upsample = upsample;
-	const FeatureExtractor extractor(o);
-	const auto calibration = calibrationOf(cols, rows, o);
+	const CFeatureExtractor extractor(o);
+	const auto calibration = calibrationOf(cols, rows);
 	const cv::Mat image = texturedImage(cols, rows);
 	cv::Mat turned;
 	cv::flip(image, turned, -1);
@@ -92,28 +91,28 @@ void expectTruePositions(const std::vector<std::pair<int, int>>& sizes, bool ups
 }
 }  // namespace
 
-TEST(FeatureExtractor, FeaturesAreAtTheirTruePixelPositionsOnTheDoubledImage)
+TEST(CFeatureExtractor, FeaturesAreAtTheirTruePixelPositionsOnTheDoubledImage)
 {
 	// Without the correction OpenCV's positions are a quarter pixel off:
 	// twice the offset is 0.5.
 	expectTruePositions({{320, 240}, {321, 241}}, true);
 }
 
-TEST(FeatureExtractor, FeaturesAreAtTheirTruePixelPositionsWithoutUpsampling)
+TEST(CFeatureExtractor, FeaturesAreAtTheirTruePixelPositionsWithoutUpsampling)
 {
 	expectTruePositions({{640, 480}, {641, 481}}, false);
 }
 
-TEST(FeatureExtractor, WithoutUpsamplingTheFinestScaleIsLeftOut)
+TEST(CFeatureExtractor, WithoutUpsamplingTheFinestScaleIsLeftOut)
 {
 	// The doubled image's octave holds the smallest blobs: without it fewer
 	// features pass on a fine texture.
-	TVisualFrontEndOptions fine, coarse;
+	CFeatureExtractor::TOptions fine, coarse;
 	fine.sift_features = coarse.sift_features = 0;
 	coarse.sift_upsample = false;
 	const cv::Mat image = texturedImage(320, 240);
-	const auto withUpsampling = FeatureExtractor(fine).extract(image, calibrationOf(320, 240, fine));
-	const auto without = FeatureExtractor(coarse).extract(image, calibrationOf(320, 240, coarse));
+	const auto withUpsampling = CFeatureExtractor(fine).extract(image, calibrationOf(320, 240));
+	const auto without = CFeatureExtractor(coarse).extract(image, calibrationOf(320, 240));
 	EXPECT_GT(without.size(), 0u);
 	EXPECT_LT(without.size(), withUpsampling.size());
 	EXPECT_EQ(without.descriptors.rows, static_cast<int>(without.size()));

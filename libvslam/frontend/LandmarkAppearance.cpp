@@ -42,7 +42,7 @@ VisualLandmarkModel vslam::landmarkOf(
 	lm.reprojectionRms = a.reprojectionRms;
 	lm.recognitions = a.recognitions;
 	if (scaleSettings)
-		lm.scale = LandmarkScaleTrack::resumed(
+		lm.scale = CLandmarkScaleTrack::resumed(
 			{a.scaleInformation, a.scaleWeightedSum, a.scalePairsUsed, a.scalePairsRejected}, *scaleSettings);
 	return lm;
 }

@@ -34,16 +34,18 @@ VisualLandmarkModel sampleLandmark(const DescriptorCodec& codec)
 	lm.reprojectionRms = 0.6;
 	lm.recognitions = 11;
 	lm.missesInARow = 2;
-	lm.scale = LandmarkScaleTrack(0.4, {});
+	lm.scale = CLandmarkScaleTrack(0.4, {});
 	return lm;
 }
 
-TVisualFrontEndOptions storing(const std::string& storage)
+CLandmarkDatabase::TOptions storing(const std::string& storage)
 {
-	TVisualFrontEndOptions o;
+	CLandmarkDatabase::TOptions o;
 	o.descriptor_storage = storage;
 	return o;
 }
+
+constexpr double kMatchRatio = 0.8;
 }  // namespace
 
 TEST(LandmarkAppearance, ALandmarkComesBackAsItWasSaved)
@@ -69,7 +71,7 @@ TEST(LandmarkAppearance, ALandmarkComesBackAsItWasSaved)
 
 TEST(LandmarkAppearance, StoredCodesEnterADatabaseOfTheirStorageUnchanged)
 {
-	CLandmarkDatabase db(storing("uint8"));
+	CLandmarkDatabase db(storing("uint8"), kMatchRatio);
 	const DescriptorCodec codec(DescriptorCodec::Kind::Uint8, 32);
 	VisualLandmarkModel lm = sampleLandmark(codec);
 	const cv::Mat codes = lm.descriptors.clone();
@@ -86,7 +88,7 @@ TEST(LandmarkAppearance, StoredCodesEnterADatabaseOfTheirStorageUnchanged)
 
 TEST(LandmarkAppearance, CodesOfAnotherStorageAreConvertedWhenTheyDecodeToSiftValues)
 {
-	CLandmarkDatabase db(storing("uint4"));
+	CLandmarkDatabase db(storing("uint4"), kMatchRatio);
 	const DescriptorCodec uint8(DescriptorCodec::Kind::Uint8, 32);
 	VisualLandmarkModel lm = sampleLandmark(uint8);
 	const cv::Mat expected = DescriptorCodec(DescriptorCodec::Kind::Uint4, 32).encode(DescriptorCodec::decode(lm.descriptors));
@@ -97,7 +99,7 @@ TEST(LandmarkAppearance, CodesOfAnotherStorageAreConvertedWhenTheyDecodeToSiftVa
 
 TEST(LandmarkAppearance, ProjectedCodesCannotBeConvertedToAnotherStorage)
 {
-	CLandmarkDatabase db(storing("uint8"));
+	CLandmarkDatabase db(storing("uint8"), kMatchRatio);
 	const DescriptorCodec projected(DescriptorCodec::Kind::Projected, 32);
 	try
 	{

@@ -1,3 +1,5 @@
+#include <libvslam/config/ConfigError.h>
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/BundleAdjustment.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkCreator.h>
@@ -107,13 +109,13 @@ bool poseFromImages(
 }
 /** Tracks: features of the newest view matched in every other view; each
  * is [feature in the newest, in view 0, ..., in view n-2]. */
-std::vector<std::vector<int>> matchTracks(const std::vector<const CreationView*>& views, const TVisualFrontEndOptions& o)
+std::vector<std::vector<int>> matchTracks(const std::vector<const CreationView*>& views, double matchRatio)
 {
 	const int n = static_cast<int>(views.size());
 	const CreationView& last = *views.back();
 	std::vector<std::map<int, int>> matchOf(n - 1);
 	for (int v = 0; v + 1 < n; v++)
-		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors, o.match_ratio))
+		for (const auto& [a, b] : matchDescriptors(last.features.descriptors, views[v]->features.descriptors, matchRatio))
 			matchOf[v][a] = b;
 	std::vector<std::vector<int>> tracks;
 	for (const auto& [a, b0] : matchOf[0])
@@ -132,7 +134,7 @@ std::vector<std::vector<int>> matchTracks(const std::vector<const CreationView*>
 
 /** The bundle adjustment problem's cameras relative to the newest, from
  * odometry, with odometry as each one's prior. */
-ba::Problem initialPoses(const std::vector<const CreationView*>& views, const TVisualFrontEndOptions& o)
+ba::Problem initialPoses(const std::vector<const CreationView*>& views, const CLandmarkCreator::TOptions& o)
 {
 	const CreationView& last = *views.back();
 	ba::Problem problem;
@@ -142,10 +144,10 @@ ba::Problem initialPoses(const std::vector<const CreationView*>& views, const TV
 	{
 		ba::PosePrior prior;
 		prior.camera = static_cast<int>(v) + 1;
-		prior.sigmaRotation = o.creation_odometry_sigma_deg * M_PI / 180;
+		prior.sigmaRotation = o.odometry_sigma_deg * M_PI / 180;
 		problem.poses.push_back(relativePose(views[v]->cameraPose, last.cameraPose));
 		prior.pose = problem.poses.back();
-		prior.sigmaTranslation = std::max(1e-3, o.creation_odometry_sigma_rel * prior.pose.centre().norm());
+		prior.sigmaTranslation = std::max(1e-3, o.odometry_sigma_rel * prior.pose.centre().norm());
 		problem.priors.push_back(prior);
 	}
 	return problem;
@@ -248,18 +250,18 @@ void refineWithoutGrossOutliers(ba::Problem& problem, std::vector<int>& trackOfP
 }
 
 /** The well-conditioned points (reprojection error, depth, parallax between
- * two cameras), smallest error first, at most creation_max_points. */
+ * two cameras), smallest error first, at most max_points. */
 std::vector<int> wellConditionedPoints(
-	const ba::Problem& problem, const std::vector<double>& err, const TVisualFrontEndOptions& o)
+	const ba::Problem& problem, const std::vector<double>& err, const CLandmarkCreator::TOptions& o)
 {
 	std::vector<Eigen::Vector3d> centres;
 	for (const auto& p : problem.poses) centres.push_back(p.centre());
-	const double minParallax = o.creation_min_parallax_deg * M_PI / 180;
+	const double minParallax = o.min_parallax_deg * M_PI / 180;
 	std::vector<int> good;
 	for (size_t i = 0; i < problem.points.size(); i++)
 	{
 		const Eigen::Vector3d& X = problem.points[i];
-		if (!(err[i] <= o.creation_max_reprojection_px) || X.norm() > o.creation_max_depth) continue;
+		if (!(err[i] <= o.max_reprojection_px) || X.norm() > o.max_depth) continue;
 		double parallax = 0;
 		for (size_t a = 0; a < centres.size(); a++)
 			for (size_t b = a + 1; b < centres.size(); b++)
@@ -267,7 +269,7 @@ std::vector<int> wellConditionedPoints(
 		if (parallax >= minParallax) good.push_back(static_cast<int>(i));
 	}
 	std::stable_sort(good.begin(), good.end(), [&](int a, int b) { return err[a] < err[b]; });
-	if (static_cast<int>(good.size()) > o.creation_max_points) good.resize(o.creation_max_points);
+	if (static_cast<int>(good.size()) > o.max_points) good.resize(o.max_points);
 	return good;
 }
 
@@ -305,10 +307,10 @@ VisualLandmarkModel landmarkOf(const ba::Problem& problem, const std::vector<int
 }
 }  // namespace
 
-CreationResult vslam::createLandmark(
-	const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount,
-	const TVisualFrontEndOptions& o)
+CreationResult CLandmarkCreator::create(
+	const std::vector<const CreationView*>& views, const mrpt::poses::CPose3D& mount) const
 {
+	const TOptions& o = m_options;
 	CreationResult result;
 	const int n = static_cast<int>(views.size());
 	if (n < 2)
@@ -316,9 +318,9 @@ CreationResult vslam::createLandmark(
 		result.why = "fewer than two views";
 		return result;
 	}
-	std::vector<std::vector<int>> tracks = matchTracks(views, o);
+	std::vector<std::vector<int>> tracks = matchTracks(views, m_matchRatio);
 	result.tracks = static_cast<int>(tracks.size());
-	if (result.tracks < o.creation_min_points)
+	if (result.tracks < o.min_points)
 	{
 		result.why = "only " + std::to_string(result.tracks) + " features matched across the views";
 		return result;
@@ -327,7 +329,7 @@ CreationResult vslam::createLandmark(
 	const double baseline = problem.poses[1].t.norm();
 	correctOldestPoseFromImages(views, problem, tracks, result);
 	std::vector<int> trackOfPoint = triangulateTracks(views, tracks, problem);
-	refineWithoutGrossOutliers(problem, trackOfPoint, o.creation_max_reprojection_px);
+	refineWithoutGrossOutliers(problem, trackOfPoint, o.max_reprojection_px);
 
 	// Scale from odometry: the oldest camera's distance.
 	const double estimated = problem.poses[1].centre().norm();
@@ -343,13 +345,13 @@ CreationResult vslam::createLandmark(
 	const auto err = maxErrorOfPoint(problem);
 	const std::vector<int> good = wellConditionedPoints(problem, err, o);
 	result.inliers = static_cast<int>(good.size());
-	if (result.inliers < o.creation_min_points)
+	if (result.inliers < o.min_points)
 	{
 		result.why = "only " + std::to_string(result.inliers) + " well-conditioned 3-D points";
 		return result;
 	}
-	const std::vector<float> depthStd = o.keepsDepthStd()  // each point's, only where an option uses it
-		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.creation_max_reprojection_px))
+	const std::vector<float> depthStd = m_keepDepthStd  // each point's, only where recognition uses it
+		? relativeDepthStds(problem, pixelNoiseOf(problem, err, o.max_reprojection_px))
 		: std::vector<float>();
 	std::vector<int> featureOfPoint;  // in the newest view
 	for (const int track : trackOfPoint) featureOfPoint.push_back(tracks[track][0]);
@@ -357,4 +359,35 @@ CreationResult vslam::createLandmark(
 	for (int v = 1; v < n; v++) result.refinedPoses.emplace_back(problem.poses[v].R, problem.poses[v].t);
 	result.refinedPoses.emplace_back(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
 	return result;
+}
+
+void CLandmarkCreator::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace config;
+	views = readCount(c, s, "views", views, 3, 10);
+	min_baseline = readDouble(c, s, "min_baseline", min_baseline, Range::positive());
+	max_baseline = readDouble(c, s, "max_baseline", max_baseline, Range::positive());
+	min_points = readCount(c, s, "min_points", min_points, 6, 100000);
+	max_points = readCount(c, s, "max_points", max_points, 6, 100000);
+	max_reprojection_px = readDouble(c, s, "max_reprojection_px", max_reprojection_px, Range::positive());
+	min_parallax_deg = readDouble(c, s, "min_parallax_deg", min_parallax_deg, Range::closed(0, 90));
+	max_depth = readDouble(c, s, "max_depth", max_depth, Range::positive());
+	odometry_sigma_deg = readDouble(c, s, "odometry_sigma_deg", odometry_sigma_deg, Range{0, 90, false, true});
+	odometry_sigma_rel = readDouble(c, s, "odometry_sigma_rel", odometry_sigma_rel, Range{0, 10, false, true});
+	if (max_baseline < min_baseline) throw ConfigError("[" + s + "] max_baseline must be >= min_baseline");
+	if (max_points < min_points) throw ConfigError("[" + s + "] max_points must be >= min_points");
+}
+
+void CLandmarkCreator::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "views", views, 30, 10, "Images a new landmark is built from (>= 3)");
+	c.write(s, "min_baseline", min_baseline, 30, 10, "Robot travel between creation views [m]");
+	c.write(s, "max_baseline", max_baseline, 30, 10, "Views older than this travel are dropped [m]");
+	c.write(s, "min_points", min_points, 30, 10, "Good 3-D points a landmark needs");
+	c.write(s, "max_points", max_points, 30, 10, "Points kept per landmark at most");
+	c.write(s, "max_reprojection_px", max_reprojection_px, 30, 10, "Point reprojection error limit, every view [px]");
+	c.write(s, "min_parallax_deg", min_parallax_deg, 30, 10, "Widest angle between a point's rays at least [deg]");
+	c.write(s, "max_depth", max_depth, 30, 10, "Points farther from the landmark frame are dropped [m]");
+	c.write(s, "odometry_sigma_deg", odometry_sigma_deg, 30, 10, "Odometry heading uncertainty between creation views [deg]");
+	c.write(s, "odometry_sigma_rel", odometry_sigma_rel, 30, 10, "Odometry translation uncertainty per distance travelled");
 }

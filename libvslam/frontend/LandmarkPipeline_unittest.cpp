@@ -2,6 +2,7 @@
  * geometry (features made directly: projected points with unique random
  * descriptors), and the feature extractor on bad images. */
 #include <gtest/gtest.h>
+#include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/frontend/LandmarkCreator.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
@@ -23,6 +24,7 @@ namespace
 constexpr double kDeg = M_PI / 180;
 const PinholeCamera kCamera{400, 400, 320, 240};
 const mrpt::poses::CPose3D kMount(0.1, 0, 0.3, -90 * kDeg, 0, -90 * kDeg);  // forward-looking
+const CVisualFrontEnd::TOptions kDefaults;
 
 struct Scene
 {
@@ -98,7 +100,7 @@ namespace
  * forward path, recognizes it from three other poses and returns the worst
  * errors against the truth: {translation m, heading rad, ProjErrRMS px,
  * |Height| m (the robot stays on the floor, so the truth is 0)}. */
-std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed, const TVisualFrontEndOptions& o = {})
+std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed, const CVisualFrontEnd::TOptions& o = {})
 {
 	std::mt19937 rng(seed);
 	const Scene scene = makeScene(rng, 300);
@@ -106,7 +108,7 @@ std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed, const
 	std::vector<CreationView> views;
 	for (size_t i = 0; i < path.size(); i++)
 		views.push_back(creationView(view(scene, path[i], rng, pixelNoise), path[i], i));
-	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, o);
+	const auto created = o.creator().create({&views[0], &views[1], &views[2]}, kMount);
 	EXPECT_TRUE(created.landmark) << created.why;
 	if (!created.landmark) return {1e9, 1e9, 1e9, 1e9};
 	EXPECT_TRUE(created.rotationFromImages);
@@ -116,7 +118,7 @@ std::array<double, 4> createAndRecognize(double pixelNoise, uint32_t seed, const
 	for (const mrpt::poses::CPose2D& query : {mrpt::poses::CPose2D(1.0, 0.5, -10 * kDeg),
 			 mrpt::poses::CPose2D(-0.5, -0.6, 15 * kDeg), mrpt::poses::CPose2D(1.8, -0.2, 5 * kDeg)})
 	{
-		const auto m = recognizeLandmark(view(scene, query, rng, pixelNoise), *created.landmark, kMount, o);
+		const auto m = o.recognizer().recognize(view(scene, query, rng, pixelNoise), *created.landmark, kMount);
 		EXPECT_TRUE(m) << query;
 		if (!m) return {1e9, 1e9, 1e9, 1e9};
 		const mrpt::poses::CPose2D truth = path.back() - query;  // landmark frame in the robot frame
@@ -165,10 +167,10 @@ TEST(LandmarkPipeline, OdometryScaleErrorBecomesTheLandmarkScaleErrorAndNothingE
 	for (size_t i = 0; i < path.size(); i++)
 		views.push_back(creationView(view(scene, path[i], rng, 0.0),
 			mrpt::poses::CPose2D(1.05 * path[i].x(), 0, 0), i));
-	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, TVisualFrontEndOptions());
+	const auto created = kDefaults.creator().create({&views[0], &views[1], &views[2]}, kMount);
 	ASSERT_TRUE(created.landmark) << created.why;
 	const mrpt::poses::CPose2D query(-1.0, 0.3, 5 * kDeg);
-	const auto m = recognizeLandmark(view(scene, query, rng, 0.0), *created.landmark, kMount, TVisualFrontEndOptions());
+	const auto m = kDefaults.recognizer().recognize(view(scene, query, rng, 0.0), *created.landmark, kMount);
 	ASSERT_TRUE(m);
 	const mrpt::poses::CPose2D truth = path.back() - query;
 	EXPECT_NEAR(m->landmarkInRobot.norm() / truth.norm(), 1.05, 0.002);
@@ -195,13 +197,12 @@ TEST(LandmarkPipeline, AnUnmodelledMountTiltShowsAsSlopeGrowingWithTheTurn)
 	std::vector<CreationView> views;
 	for (size_t i = 0; i < path.size(); i++)
 		views.push_back(creationView(view(scene, path[i], rng, 0.0, trueMount), path[i], i));
-	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, TVisualFrontEndOptions());
+	const auto created = kDefaults.creator().create({&views[0], &views[1], &views[2]}, kMount);
 	ASSERT_TRUE(created.landmark) << created.why;
 	for (const double dtheta : {0.0, 10 * kDeg, 20 * kDeg, -20 * kDeg, 30 * kDeg})
 	{
 		const mrpt::poses::CPose2D query(0.8, 0.1, dtheta);
-		const auto m = recognizeLandmark(
-			view(scene, query, rng, 0.0, trueMount), *created.landmark, kMount, TVisualFrontEndOptions());
+		const auto m = kDefaults.recognizer().recognize(view(scene, query, rng, 0.0, trueMount), *created.landmark, kMount);
 		ASSERT_TRUE(m) << dtheta;
 		const double expected = std::acos(1 - std::pow(std::sin(d), 2) * (1 - std::cos(dtheta)));
 		// Measured: within 4% of it, plus 0.0005 rad from the landmark's shape
@@ -217,27 +218,27 @@ TEST(LandmarkPipeline, UnrelatedViewsMakeNoLandmarkAndAreNotRecognized)
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
 	std::vector<CreationView> views{creationView(view(a, path[0], rng, 0.3), path[0], 0),
 		creationView(view(b, path[1], rng, 0.3), path[1], 1), creationView(view(c, path[2], rng, 0.3), path[2], 2)};
-	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, TVisualFrontEndOptions());
+	const auto created = kDefaults.creator().create({&views[0], &views[1], &views[2]}, kMount);
 	EXPECT_FALSE(created.landmark);
 	EXPECT_NE(created.why.find("matched"), std::string::npos) << created.why;
 
 	// A landmark of scene a is not found in an image of scene b.
 	std::vector<CreationView> good;
 	for (size_t i = 0; i < path.size(); i++) good.push_back(creationView(view(a, path[i], rng, 0.3), path[i], i));
-	const auto lm = createLandmark({&good[0], &good[1], &good[2]}, kMount, TVisualFrontEndOptions());
+	const auto lm = kDefaults.creator().create({&good[0], &good[1], &good[2]}, kMount);
 	ASSERT_TRUE(lm.landmark);
-	EXPECT_FALSE(recognizeLandmark(view(b, path[1], rng, 0.3), *lm.landmark, kMount, TVisualFrontEndOptions()));
+	EXPECT_FALSE(kDefaults.recognizer().recognize(view(b, path[1], rng, 0.3), *lm.landmark, kMount));
 }
 
-TEST(FeatureExtractor, BadImagesGiveFewOrNoFeaturesNotErrors)
+TEST(CFeatureExtractor, BadImagesGiveFewOrNoFeaturesNotErrors)
 {
-	TVisualFrontEndOptions o;
-	const FeatureExtractor extractor(o);
+	CVisualFrontEnd::TOptions o;
+	const CFeatureExtractor extractor(o.features);
 	mrpt::img::TCamera calib;
 	calib.ncols = 320;
 	calib.nrows = 240;
 	calib.setIntrinsicParamsFromValues(300, 300, 160, 120);
-	const auto cal = ImageCalibration::from(calib, 320, 240, o, "test");
+	const auto cal = CImageCalibration::from(calib, 320, 240, o.camera, "test");
 
 	cv::Mat textured(240, 320, CV_8UC3);
 	cv::randu(textured, 0, 255);
@@ -254,17 +255,17 @@ TEST(FeatureExtractor, BadImagesGiveFewOrNoFeaturesNotErrors)
 	EXPECT_EQ(tiny.descriptors.cols, 128);
 }
 
-TEST(ImageCalibration, UnusableCalibrationsAreErrorsNamingTheImage)
+TEST(CImageCalibration, UnusableCalibrationsAreErrorsNamingTheImage)
 {
-	TVisualFrontEndOptions o;
+	CImageCalibration::TOptions o;
 	mrpt::img::TCamera calib;
 	calib.ncols = 640;
 	calib.nrows = 480;
 	calib.setIntrinsicParamsFromValues(500, 500, 320, 240);
-	EXPECT_NO_THROW(ImageCalibration::from(calib, 640, 480, o, "img"));
+	EXPECT_NO_THROW(CImageCalibration::from(calib, 640, 480, o, "img"));
 	try
 	{
-		ImageCalibration::from(calib, 320, 240, o, "entry 12, image 'a.png'");
+		CImageCalibration::from(calib, 320, 240, o, "entry 12, image 'a.png'");
 		FAIL();
 	}
 	catch (const std::invalid_argument& e)
@@ -274,12 +275,12 @@ TEST(ImageCalibration, UnusableCalibrationsAreErrorsNamingTheImage)
 	}
 	mrpt::img::TCamera none;
 	none.setIntrinsicParamsFromValues(0, 0, 0, 0);
-	EXPECT_THROW(ImageCalibration::from(none, 640, 480, o, "x"), std::invalid_argument);
+	EXPECT_THROW(CImageCalibration::from(none, 640, 480, o, "x"), std::invalid_argument);
 	// The INI overrides stand in for a missing calibration.
 	o.fx = o.fy = 500;
 	o.cx = 320;
 	o.cy = 240;
-	EXPECT_NEAR(ImageCalibration::from(none, 640, 480, o, "x").camera.fx, 500, 0);
+	EXPECT_NEAR(CImageCalibration::from(none, 640, 480, o, "x").camera.fx, 500, 0);
 }
 
 namespace
@@ -324,14 +325,14 @@ std::array<double, 6> predictedAgainstEmpirical(const Scene& scene, const mrpt::
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
 	std::vector<CreationView> views;
 	for (size_t i = 0; i < path.size(); i++) views.push_back(creationView(view(scene, path[i], rng, 0.0), path[i], i));
-	const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, TVisualFrontEndOptions());
+	const auto created = kDefaults.creator().create({&views[0], &views[1], &views[2]}, kMount);
 	EXPECT_TRUE(created.landmark) << created.why;
 	if (!created.landmark) return {0, 0, 0, 0, 0, 0};
 	const mrpt::poses::CPose2D truth = path.back() - query;
 	ScatterAgainstPrediction scatter;
 	for (int k = 0; k < trials; k++)
 	{
-		const auto m = recognizeLandmark(view(scene, query, rng, 0.5), *created.landmark, kMount, TVisualFrontEndOptions());
+		const auto m = kDefaults.recognizer().recognize(view(scene, query, rng, 0.5), *created.landmark, kMount);
 		if (!m) continue;
 		scatter.add(*m, truth);
 		EXPECT_NEAR(std::sqrt(m->covariance(2, 2)), m->stdHeading, 1e-12);
@@ -381,7 +382,7 @@ namespace
  * from `query` with the same noise: {RMS position error, mean predicted
  * position std, RMS heading error, mean predicted heading std}. */
 std::array<double, 6> scatterOfRebuiltLandmarks(
-	const Scene& scene, const mrpt::poses::CPose2D& query, int trials, const TVisualFrontEndOptions& o)
+	const Scene& scene, const mrpt::poses::CPose2D& query, int trials, const CVisualFrontEnd::TOptions& o)
 {
 	std::mt19937 rng(21);
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
@@ -391,11 +392,11 @@ std::array<double, 6> scatterOfRebuiltLandmarks(
 	{
 		std::vector<CreationView> views;
 		for (size_t i = 0; i < path.size(); i++) views.push_back(creationView(view(scene, path[i], rng, 0.5), path[i], i));
-		const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, o);
+		const auto created = o.creator().create({&views[0], &views[1], &views[2]}, kMount);
 		if (!created.landmark) continue;
 		// Kept only for the recognition that uses it.
-		EXPECT_EQ(created.landmark->depthStd.size(), o.keepsDepthStd() ? created.landmark->points.size() : 0);
-		const auto m = recognizeLandmark(view(scene, query, rng, 0.5), *created.landmark, kMount, o);
+		EXPECT_EQ(created.landmark->depthStd.size(), o.recognition.structure_weighted ? created.landmark->points.size() : 0);
+		const auto m = o.recognizer().recognize(view(scene, query, rng, 0.5), *created.landmark, kMount);
 		if (m) scatter.add(*m, truth);
 	}
 	EXPECT_GE(scatter.n, trials * 9 / 10);
@@ -406,7 +407,7 @@ std::array<double, 6> scatterOfRebuiltLandmarks(
  * from 1 m to the side and turned 20 deg, with `first` and then `second`
  * options; both printed. */
 std::pair<std::array<double, 6>, std::array<double, 6>> scattersFromTheSide(
-	const TVisualFrontEndOptions& first, const char* firstName, const TVisualFrontEndOptions& second,
+	const CVisualFrontEnd::TOptions& first, const char* firstName, const CVisualFrontEnd::TOptions& second,
 	const char* secondName)
 {
 	std::mt19937 rng(12);
@@ -424,10 +425,10 @@ std::pair<std::array<double, 6>, std::array<double, 6>> scattersFromTheSide(
 
 TEST(LandmarkRecognizer, StructureWeightedPoseFitsLandmarksBuiltFromAShortBaselineCloserFromTheSide)
 {
-	TVisualFrontEndOptions o;
-	o.recognition_structure_weighted = false;
-	TVisualFrontEndOptions weightedFit = o;
-	weightedFit.recognition_structure_weighted = true;
+	CVisualFrontEnd::TOptions o;
+	o.recognition.structure_weighted = false;
+	CVisualFrontEnd::TOptions weightedFit = o;
+	weightedFit.recognition.structure_weighted = true;
 	const auto [unweighted, weighted] = scattersFromTheSide(o, "unweighted", weightedFit, "weighted");
 	// The same landmarks (the same draws), measured closer to the truth...
 	EXPECT_LT(weighted[0], 0.8 * unweighted[0]);
@@ -465,7 +466,7 @@ struct DepthError
 
 /** Landmarks of `scene` built `trials` times along a straight 0.4 m forward
  * path with 0.5 px pixel noise: the depth error of every point kept. */
-std::vector<DepthError> depthErrorsOfBuiltPoints(const Scene& scene, int trials, const TVisualFrontEndOptions& o)
+std::vector<DepthError> depthErrorsOfBuiltPoints(const Scene& scene, int trials, const CVisualFrontEnd::TOptions& o)
 {
 	std::mt19937 rng(31);
 	const std::vector<mrpt::poses::CPose2D> path{{0, 0, 0}, {0.2, 0, 0}, {0.4, 0, 0}};
@@ -476,7 +477,7 @@ std::vector<DepthError> depthErrorsOfBuiltPoints(const Scene& scene, int trials,
 	{
 		std::vector<CreationView> views;
 		for (size_t i = 0; i < path.size(); i++) views.push_back(creationView(view(scene, path[i], rng, 0.5), path[i], i));
-		const auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, o);
+		const auto created = o.creator().create({&views[0], &views[1], &views[2]}, kMount);
 		EXPECT_TRUE(created.landmark) << created.why;
 		if (!created.landmark) continue;
 		const VisualLandmarkModel& lm = *created.landmark;
@@ -506,8 +507,8 @@ TEST(LandmarkCreator, DepthStdOfEachPointMatchesItsDepthError)
 {
 	std::mt19937 rng(12);
 	const Scene wide = makeScene(rng, 300);
-	TVisualFrontEndOptions o;
-	o.recognition_structure_weighted = true;  // keeps the depth stds in the landmark
+	CVisualFrontEnd::TOptions o;
+	o.recognition.structure_weighted = true;  // keeps the depth stds in the landmark
 	const std::vector<DepthError> all = depthErrorsOfBuiltPoints(wide, 20, o);
 	std::vector<double> z, relative;
 	for (const auto& e : all) z.push_back(e.error / e.predictedStd), relative.push_back(e.error);

@@ -1,3 +1,4 @@
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/LandmarkRecognizer.h>
@@ -72,24 +73,24 @@ constexpr double kNoThreshold = std::numeric_limits<double>::infinity();
 /** AP3P draws 4 points. */
 constexpr int kRansacSampleSize = 4;
 
-/** RANSAC draws for `matches` 2-D/3-D matches: recognition_ransac_iterations
- * at most, and no more than a pose with recognition_min_inliers would take
+/** RANSAC draws for `matches` 2-D/3-D matches: ransac_iterations
+ * at most, and no more than a pose with min_inliers would take
  * to be drawn with kRansacConfidence (RansacIterations.h): a candidate
  * without one then costs a fraction of the budget. */
-int ransacDraws(int matches, const TVisualFrontEndOptions& o)
+int ransacDraws(int matches, const CLandmarkRecognizer::TOptions& o)
 {
-	if (matches < kRansacSampleSize) return o.recognition_ransac_iterations;
-	return std::min(o.recognition_ransac_iterations,
-		ransacIterationsToFind(o.recognition_min_inliers, matches, kRansacSampleSize, kRansacConfidence));
+	if (matches < kRansacSampleSize) return o.ransac_iterations;
+	return std::min(o.ransac_iterations,
+		ransacIterationsToFind(o.min_inliers, matches, kRansacSampleSize, kRansacConfidence));
 }
 
 /** RANSAC PnP (OpenCV's solvePnPRansac, AP3P minimal sets); true if a pose was found. */
 bool robustPnP(const std::vector<cv::Point3f>& object, const std::vector<cv::Point2f>& pixels, const cv::Mat& K,
-	const TVisualFrontEndOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)
+	const CLandmarkRecognizer::TOptions& o, cv::Mat& rvec, cv::Mat& tvec, std::vector<int>& inliers)
 {
 	const int iterations = ransacDraws(static_cast<int>(object.size()), o);
 	return cv::solvePnPRansac(object, pixels, K, cv::noArray(), rvec, tvec, false, iterations,
-		static_cast<float>(o.recognition_ransac_px), kRansacConfidence, inliers, cv::SOLVEPNP_AP3P);
+		static_cast<float>(o.ransac_px), kRansacConfidence, inliers, cv::SOLVEPNP_AP3P);
 }
 
 /** The elements of `all` at `rows`, in that order. */
@@ -102,7 +103,7 @@ std::vector<T> subset(const std::vector<T>& all, const std::vector<int>& rows)
 	return out;
 }
 
-/** The matches a pose reprojects within recognition_ransac_px, and the sum
+/** The matches a pose reprojects within ransac_px, and the sum
  * of their squared errors. */
 struct PoseConsensus
 {
@@ -183,23 +184,23 @@ MeasurementJacobians measurementJacobians(const cv::Mat& rvec, const cv::Mat& tv
 }
 }  // namespace
 
-std::optional<VisualMeasurement> vslam::recognizeLandmark(
-	const ImageFeatures& image, const VisualLandmarkModel& lm, const mrpt::poses::CPose3D& mount,
-	const TVisualFrontEndOptions& o)
+std::optional<VisualMeasurement> CLandmarkRecognizer::recognize(
+	const ImageFeatures& image, const VisualLandmarkModel& lm, const mrpt::poses::CPose3D& mount) const
 {
+	const TOptions& o = m_options;
 	const cv::Mat& query = image.codes.empty() ? image.descriptors : image.codes;
 	const cv::Mat landmarkDescriptors = DescriptorCodec::decode(lm.descriptors);
-	const auto matches = matchDescriptors(query, landmarkDescriptors, o.match_ratio);
-	if (static_cast<int>(matches.size()) < o.recognition_min_inliers) return std::nullopt;
+	const auto matches = matchDescriptors(query, landmarkDescriptors, m_matchRatio);
+	if (static_cast<int>(matches.size()) < o.min_inliers) return std::nullopt;
 	Correspondences c;
 	for (const auto& [qi, pi] : matches) c.add(lm, image, qi, pi);
 	const cv::Mat K(image.camera.K());
 	cv::Mat rvec, tvec;
 	std::vector<int> inliers;
 	const bool found = robustPnP(c.object, c.pixels, K, o, rvec, tvec, inliers);
-	if (!found || static_cast<int>(inliers.size()) < o.recognition_min_inliers) return std::nullopt;
-	PoseConsensus fit = refineOnInliers(c.object, c.pixels, K, o.recognition_ransac_px, inliers, rvec, tvec);
-	if (static_cast<int>(fit.inliers.size()) < o.recognition_min_inliers) return std::nullopt;
+	if (!found || static_cast<int>(inliers.size()) < o.min_inliers) return std::nullopt;
+	PoseConsensus fit = refineOnInliers(c.object, c.pixels, K, o.ransac_px, inliers, rvec, tvec);
+	if (static_cast<int>(fit.inliers.size()) < o.min_inliers) return std::nullopt;
 	const std::vector<cv::Point3f>& object = c.object;
 	const std::vector<cv::Point2f>& pixels = c.pixels;
 	const std::vector<int>& refinedInliers = fit.inliers;
@@ -207,19 +208,19 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	const std::vector<cv::Point3f> inlierObject = subset(object, refinedInliers);
 	const std::vector<cv::Point2f> inlierPixels = subset(pixels, refinedInliers);
 	std::vector<float> inlierDepthStd;  // empty: the points taken as exact
-	if (o.keepsDepthStd() && lm.depthStd.size() == lm.points.size())
+	if (o.structure_weighted && lm.depthStd.size() == lm.points.size())
 		for (int i : refinedInliers) inlierDepthStd.push_back(lm.depthStd[c.point[i]]);
 	// The landmark was built by this camera on this mount.
 	const Eigen::Vector3d creationCamera(mount.x(), mount.y(), mount.z());
 
 	// Predicted uncertainty: the pose covariance of the least-squares fit
 	// over the inliers, carried to (dx, dy, dtheta) and to the tilt by a
-	// numerical Jacobian. With recognition_structure_weighted, the fit
+	// numerical Jacobian. With structure_weighted, the fit
 	// weighted by each point's depth uncertainty, and its covariance;
 	// otherwise the unweighted fit's (pixel noise sigma: their RMS error, at
 	// least kLeastPixelNoisePx).
 	Eigen::Matrix<double, 6, 6> poseCov;
-	bool conditioned = o.recognition_structure_weighted && !inlierDepthStd.empty() &&
+	bool conditioned = o.structure_weighted && !inlierDepthStd.empty() &&
 		refinePoseWeightedByStructure(inlierObject, inlierPixels, inlierDepthStd, creationCamera, image.camera.K(),
 			kLeastPixelNoisePx, rvec, tvec, poseCov);
 	if (conditioned) fit.sumSquaredPx = consensusOf(inlierObject, inlierPixels, K, rvec, tvec, kNoThreshold).sumSquaredPx;
@@ -243,4 +244,25 @@ std::optional<VisualMeasurement> vslam::recognizeLandmark(
 	m.stdSlope = slopeStd(m.tilt, J.G * poseCov * J.G.transpose());
 	setPredictedCovariance(m, J.F * poseCov * J.F.transpose());
 	return m;
+}
+
+void CLandmarkRecognizer::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace config;
+	min_inliers = readCount(c, s, "min_inliers", min_inliers, 6, 100000);
+	ransac_px = readDouble(c, s, "ransac_px", ransac_px, Range::positive());
+	ransac_iterations = readCount(c, s, "ransac_iterations", ransac_iterations, 1, 100000);
+	structure_weighted = readBool(c, s, "structure_weighted", structure_weighted);
+	odometry_gate.horizon = readDouble(c, s, "odometry_gate_s", odometry_gate.horizon, Range::nonNegative());
+}
+
+void CLandmarkRecognizer::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "min_inliers", min_inliers, 30, 10, "PnP inliers needed to accept a pose");
+	c.write(s, "ransac_px", ransac_px, 30, 10, "RANSAC inlier threshold [px]");
+	c.write(s, "ransac_iterations", ransac_iterations, 30, 10, "RANSAC draw budget");
+	c.write(s, "structure_weighted", structure_weighted, 30, 10,
+		"Refine the pose weighting each inlier by its pixel noise plus its point's depth uncertainty from creation (6-DOF solve)");
+	c.write(s, "odometry_gate_s", odometry_gate.horizon, 30, 10,
+		"Reject a pose that disagrees with the landmark's last kept one at most this old, carried by the odometry (by 0.3 m + 10% of its distance, or 10 deg) [s] (0: off)");
 }

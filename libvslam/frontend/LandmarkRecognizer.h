@@ -16,8 +16,9 @@
  * the paper's statistics do not see it, the predicted uncertainty does.
  */
 #include <libvslam/frontend/ImageFeatures.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/OdometryConsistency.h>
 #include <libvslam/frontend/VisualLandmarkModel.h>
+#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -52,9 +53,45 @@ struct VisualMeasurement
 	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
 };
 
-/** The measurement of `landmark` in `image`, if the pose solve finds at
- * least recognition_min_inliers inliers. */
-std::optional<VisualMeasurement> recognizeLandmark(
-	const ImageFeatures& image, const VisualLandmarkModel& landmark,
-	const mrpt::poses::CPose3D& mount, const TVisualFrontEndOptions& options);
+/** Recognizes candidate landmarks in an image by a robust pose solve. */
+class CLandmarkRecognizer
+{
+   public:
+	/** INI section [vslam_recognition]. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_recognition";
+
+		int min_inliers = 12;  //!< PnP inliers to accept a pose
+		double ransac_px = 3.0;  //!< RANSAC inlier threshold
+		int ransac_iterations = 300;  //!< RANSAC's draw budget
+		/** Refine the pose with each inlier weighted by its pixel noise plus its
+		 * point's depth uncertainty from creation (generalized least squares,
+		 * WeightedPoseRefinement.h); the predicted uncertainty is then that
+		 * fit's, the structure included. Landmarks keep each point's depth std
+		 * (4 bytes per point). */
+		bool structure_weighted = false;
+		/** A recognition is kept only if it agrees with the same landmark's last
+		 * kept one, carried to now by the odometry, when that one is at most
+		 * `horizon` old (OdometryConsistency.h; INI key odometry_gate_s, 0: no
+		 * test). The tolerances are OdometryConsistency's. */
+		TOdometryConsistency odometry_gate;
+
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	/** `matchRatio`: the features' ratio test. */
+	CLandmarkRecognizer(const TOptions& options, double matchRatio) : m_options(options), m_matchRatio(matchRatio) {}
+	const TOptions& options() const { return m_options; }
+
+	/** The measurement of `landmark` in `image`, if the pose solve finds at
+	 * least min_inliers inliers. */
+	std::optional<VisualMeasurement> recognize(
+		const ImageFeatures& image, const VisualLandmarkModel& landmark, const mrpt::poses::CPose3D& mount) const;
+
+   private:
+	TOptions m_options;
+	double m_matchRatio;
+};
 }  // namespace vslam

@@ -1,4 +1,6 @@
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/LandmarkScaleTrack.h>
+#include <libvslam/models/CMotionModel.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -12,23 +14,23 @@ namespace
 constexpr double kGate99 = 9.21;
 }  // namespace
 
-LandmarkScaleTrack::LandmarkScaleTrack(double creationBaseline, const TScaleRefinementSettings& settings)
+CLandmarkScaleTrack::CLandmarkScaleTrack(double creationBaseline, const TScaleRefinementSettings& settings)
 	: m_settings(settings)
 {
 	if (!(creationBaseline > 0) || !(settings.odometrySigma > 0))
-		throw std::invalid_argument("LandmarkScaleTrack: baseline and odometry sigma must be positive");
+		throw std::invalid_argument("CLandmarkScaleTrack: baseline and odometry sigma must be positive");
 	m_fixedInformation = creationBaseline / (settings.odometrySigma * settings.odometrySigma);
 	m_fixedWeightedSum = m_fixedInformation;
 	m_information = m_fixedInformation;
 	m_weightedSum = m_fixedWeightedSum;
 }
 
-LandmarkScaleTrack LandmarkScaleTrack::resumed(const TState& state, const TScaleRefinementSettings& settings)
+CLandmarkScaleTrack CLandmarkScaleTrack::resumed(const TState& state, const TScaleRefinementSettings& settings)
 {
 	const bool positive = state.information > 0 && state.weightedSum > 0 && std::isfinite(state.information) &&
 		std::isfinite(state.weightedSum);
-	if (!positive) throw std::invalid_argument("LandmarkScaleTrack: a resumed state must be positive and finite");
-	LandmarkScaleTrack track;
+	if (!positive) throw std::invalid_argument("CLandmarkScaleTrack: a resumed state must be positive and finite");
+	CLandmarkScaleTrack track;
 	track.m_settings = settings;
 	track.m_fixedInformation = track.m_information = state.information;
 	track.m_fixedWeightedSum = track.m_weightedSum = state.weightedSum;
@@ -37,9 +39,9 @@ LandmarkScaleTrack LandmarkScaleTrack::resumed(const TState& state, const TScale
 	return track;
 }
 
-double LandmarkScaleTrack::scaleErrorStd() const { return 1 / std::sqrt(m_information); }
+double CLandmarkScaleTrack::scaleErrorStd() const { return 1 / std::sqrt(m_information); }
 
-double LandmarkScaleTrack::addSighting(const ScaleSighting& s)
+double CLandmarkScaleTrack::addSighting(const ScaleSighting& s)
 {
 	if (!std::isfinite(s.stdPosition)) return 1;  // a degenerate solve measures nothing
 	// Back to the units the landmark was built in.
@@ -88,7 +90,7 @@ double LandmarkScaleTrack::addSighting(const ScaleSighting& s)
 	return appliedFactor() / applied;
 }
 
-void LandmarkScaleTrack::foldOldestPair()
+void CLandmarkScaleTrack::foldOldestPair()
 {
 	const Pair& oldest = m_pairs.front();
 	const double variance = oldest.variance(scaleError(), m_settings.odometrySigma);
@@ -104,7 +106,7 @@ void LandmarkScaleTrack::foldOldestPair()
 	m_pairs.erase(m_pairs.begin());
 }
 
-void LandmarkScaleTrack::estimate()
+void CLandmarkScaleTrack::estimate()
 {
 	const double kBefore = scaleError();
 	// Each pair's variance and its information on k, with k as it was.
@@ -149,4 +151,29 @@ void LandmarkScaleTrack::estimate()
 	}
 	m_used = m_foldedUsed, m_rejected = m_foldedRejected;
 	for (const Pair& p : m_pairs) (p.used ? m_used : m_rejected)++;
+}
+
+void CLandmarkScaleTrack::TOptions::takeOdometryNoiseFrom(double motionModelSigmaT)
+{
+	if (odometry_sigma == 0) odometry_sigma = motionModelSigmaT;
+}
+
+TScaleRefinementSettings CLandmarkScaleTrack::TOptions::settings() const
+{
+	TScaleRefinementSettings s;
+	s.odometrySigma = odometry_sigma > 0 ? odometry_sigma : CMotionModel::TOptions().sigma_T;
+	return s;
+}
+
+void CLandmarkScaleTrack::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace config;
+	enabled = readBool(c, s, "enabled", enabled);
+	odometry_sigma = readDouble(c, s, "odometry_sigma", odometry_sigma, Range::closed(0, 10));
+}
+
+void CLandmarkScaleTrack::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "enabled", enabled, 30, 10, "Refine landmark scales from later sightings and odometry");
+	c.write(s, "odometry_sigma", odometry_sigma, 30, 10, "Odometry translation noise [m/sqrt(m)] (0: [vslam_motion_model] sigma_T)");
 }

@@ -46,6 +46,7 @@
  * are kept for this; older ones are folded into the prior as they were
  * last judged, so a landmark's memory stays bounded.
  */
+#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/math/TPoint2D.h>
 
 #include <cstddef>
@@ -76,13 +77,39 @@ struct ScaleSighting
 	double travelled = 0;  //!< odometry path length so far, m
 };
 
-class LandmarkScaleTrack
+class CLandmarkScaleTrack
 {
    public:
-	LandmarkScaleTrack() = default;
+	/** INI section [vslam_scale_refinement]. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_scale_refinement";
+
+		/** Refine each landmark's scale from its later sightings against the
+		 * odometry between them. */
+		bool enabled = true;
+		/** The odometry's translation noise, m/sqrt(m) travelled; 0: the
+		 * motion model's sigma_T ([vslam_motion_model] of the same INI), so
+		 * the two cannot disagree by oversight. The track takes this noise's
+		 * mean share out of each odometry displacement, so it should be the
+		 * odometry's true noise: one stated too large makes landmarks too
+		 * small. */
+		double odometry_sigma = 0;
+
+		/** Sets odometry_sigma to the motion model's sigma_T if it is 0. */
+		void takeOdometryNoiseFrom(double motionModelSigmaT);
+		/** The track's settings; an odometry_sigma still 0 (options not read
+		 * from an INI) is the motion model's default. */
+		TScaleRefinementSettings settings() const;
+
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	CLandmarkScaleTrack() = default;
 	/** Starts the track of a landmark built over `creationBaseline` metres
 	 * of odometry. */
-	LandmarkScaleTrack(double creationBaseline, const TScaleRefinementSettings& settings);
+	CLandmarkScaleTrack(double creationBaseline, const TScaleRefinementSettings& settings);
 
 	/** Adds a sighting. Returns the factor by which the landmark's lengths
 	 * (its points, and the translation of this sighting's measurement)
@@ -110,7 +137,7 @@ class LandmarkScaleTrack
 	 * prior, and pairs start with its next sighting (a new run's odometry
 	 * does not continue the old one's). Throws std::invalid_argument if the
 	 * state is not positive and finite. */
-	static LandmarkScaleTrack resumed(const TState& state, const TScaleRefinementSettings& settings);
+	static CLandmarkScaleTrack resumed(const TState& state, const TScaleRefinementSettings& settings);
 
 	/** Heap memory held (the pairs kept for judging). */
 	size_t bytes() const { return m_pairs.capacity() * sizeof(Pair); }

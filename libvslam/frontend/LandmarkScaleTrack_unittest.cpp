@@ -30,7 +30,7 @@ struct DriveSettings
 
 struct DriveResult
 {
-	LandmarkScaleTrack track;
+	CLandmarkScaleTrack track;
 	double productOfFactors = 1;
 };
 
@@ -43,7 +43,7 @@ DriveResult drive(const DriveSettings& d, unsigned seed)
 	std::normal_distribution<double> unit(0, 1);
 	TScaleRefinementSettings settings;
 	settings.odometrySigma = d.odometrySigma;
-	DriveResult r{LandmarkScaleTrack(0.3, settings)};
+	DriveResult r{CLandmarkScaleTrack(0.3, settings)};
 	const CPose2D landmarkInWorld(1.0, 2.0, 0.7);
 	CPose2D odometry(-3, 4, -1.2);  // the odometry frame is anywhere, too
 	CPose2D truth(0, 0, 0.2);
@@ -82,7 +82,7 @@ DriveSettings firstPairOf(DriveSettings d)
 }
 }  // namespace
 
-TEST(LandmarkScaleTrack, FindsTheScaleErrorWithinItsStatedUncertainty)
+TEST(CLandmarkScaleTrack, FindsTheScaleErrorWithinItsStatedUncertainty)
 {
 	const DriveSettings d;
 	for (unsigned seed = 1; seed <= 10; seed++)
@@ -95,7 +95,7 @@ TEST(LandmarkScaleTrack, FindsTheScaleErrorWithinItsStatedUncertainty)
 	}
 }
 
-TEST(LandmarkScaleTrack, StatedUncertaintyMatchesTheScatterOverSeeds)
+TEST(CLandmarkScaleTrack, StatedUncertaintyMatchesTheScatterOverSeeds)
 {
 	const DriveSettings d;
 	double sumSq = 0, stated = 0;
@@ -113,7 +113,7 @@ TEST(LandmarkScaleTrack, StatedUncertaintyMatchesTheScatterOverSeeds)
 	EXPECT_GT(scatter, stated / 1.5);
 }
 
-TEST(LandmarkScaleTrack, NoisyOdometryDoesNotShrinkTheEstimate)
+TEST(CLandmarkScaleTrack, NoisyOdometryDoesNotShrinkTheEstimate)
 {
 	// A landmark built true to scale (so the prior's pull is nil): over
 	// many seeds the estimates must centre on k = 1. The odometry's noise
@@ -136,7 +136,7 @@ TEST(LandmarkScaleTrack, NoisyOdometryDoesNotShrinkTheEstimate)
 	EXPECT_NEAR(mean, 1.0, 4 * standardError);
 }
 
-TEST(LandmarkScaleTrack, ReturnedFactorsBringTheLandmarkToTheEstimate)
+TEST(CLandmarkScaleTrack, ReturnedFactorsBringTheLandmarkToTheEstimate)
 {
 	const auto r = drive(DriveSettings{}, 3);
 	EXPECT_NEAR(r.productOfFactors, r.track.appliedFactor(), 1e-12);
@@ -145,7 +145,7 @@ TEST(LandmarkScaleTrack, ReturnedFactorsBringTheLandmarkToTheEstimate)
 	EXPECT_NEAR(r.track.appliedFactor() * 1.10, 1.0, 3.5 * r.track.scaleErrorStd());
 }
 
-TEST(LandmarkScaleTrack, WithNoiseFreeDataOnlyThePriorKeepsItFromTheTruth)
+TEST(CLandmarkScaleTrack, WithNoiseFreeDataOnlyThePriorKeepsItFromTheTruth)
 {
 	DriveSettings d;
 	d.noise = 0;
@@ -165,7 +165,7 @@ TEST(LandmarkScaleTrack, WithNoiseFreeDataOnlyThePriorKeepsItFromTheTruth)
 	EXPECT_LT(r.track.scaleError(), priorAndTruth + 0.017 * d.trueScaleError);
 }
 
-TEST(LandmarkScaleTrack, AWrongRecognitionIsGatedOut)
+TEST(CLandmarkScaleTrack, AWrongRecognitionIsGatedOut)
 {
 	DriveSettings d;
 	d.outlierAt = 20;
@@ -177,7 +177,7 @@ TEST(LandmarkScaleTrack, AWrongRecognitionIsGatedOut)
 	EXPECT_LT(std::abs(withOutlier.track.scaleError() - d.trueScaleError), 3.5 * withOutlier.track.scaleErrorStd());
 }
 
-TEST(LandmarkScaleTrack, AWrongFirstPairIsDroppedOnceLaterPairsDisagree)
+TEST(CLandmarkScaleTrack, AWrongFirstPairIsDroppedOnceLaterPairsDisagree)
 {
 	// The first sighting is 0.5 m off and the second comes 1.8 m later: the
 	// first pair is long, so it outweighs the prior, and k is still so
@@ -204,7 +204,7 @@ TEST(LandmarkScaleTrack, AWrongFirstPairIsDroppedOnceLaterPairsDisagree)
 	}
 }
 
-TEST(LandmarkScaleTrack, ARightPairTheEstimateWasNotReadyForComesBack)
+TEST(CLandmarkScaleTrack, ARightPairTheEstimateWasNotReadyForComesBack)
 {
 	// A landmark 35% too large, sighted without noise (the stated sigmas
 	// stay): the first pair, 1.8 m long, is right but so far from the prior
@@ -225,21 +225,21 @@ TEST(LandmarkScaleTrack, ARightPairTheEstimateWasNotReadyForComesBack)
 	EXPECT_LT(std::abs(r.track.scaleError() - d.trueScaleError), 3.5 * r.track.scaleErrorStd());
 }
 
-TEST(LandmarkScaleTrack, PairsPastTheJudgedWindowKeepTheirVerdict)
+TEST(CLandmarkScaleTrack, PairsPastTheJudgedWindowKeepTheirVerdict)
 {
 	// 200 sightings 0.1 m apart: about 60 pairs, more than the window.
 	DriveSettings d;
 	d.sightings = 200;
 	d.outlierAt = 20;
 	const auto r = drive(d, 4);
-	EXPECT_GT(static_cast<size_t>(r.track.pairsUsed() + r.track.pairsRejected()), LandmarkScaleTrack::kJudgedPairs);
+	EXPECT_GT(static_cast<size_t>(r.track.pairsUsed() + r.track.pairsRejected()), CLandmarkScaleTrack::kJudgedPairs);
 	EXPECT_GE(r.track.pairsRejected(), 1);  // the outlier's, folded as rejected
-	EXPECT_LE(r.track.bytes(), LandmarkScaleTrack::kJudgedPairs * 64);
+	EXPECT_LE(r.track.bytes(), CLandmarkScaleTrack::kJudgedPairs * 64);
 	EXPECT_LT(std::abs(r.track.scaleError() - d.trueScaleError), 3.5 * r.track.scaleErrorStd());
 	EXPECT_NEAR(r.productOfFactors, r.track.appliedFactor(), 1e-12);
 }
 
-TEST(LandmarkScaleTrack, SightingsTooFarApartFormNoPair)
+TEST(CLandmarkScaleTrack, SightingsTooFarApartFormNoPair)
 {
 	DriveSettings d;
 	d.step = 2.5;  // beyond pairMaxTravel = 2 m: odometry drift would dominate
@@ -250,19 +250,19 @@ TEST(LandmarkScaleTrack, SightingsTooFarApartFormNoPair)
 	EXPECT_NEAR(r.track.scaleErrorStd(), 0.05 / std::sqrt(0.3), 1e-12);
 }
 
-TEST(LandmarkScaleTrack, RejectsANonPositiveBaseline)
+TEST(CLandmarkScaleTrack, RejectsANonPositiveBaseline)
 {
-	EXPECT_THROW(LandmarkScaleTrack(0.0, TScaleRefinementSettings{}), std::invalid_argument);
+	EXPECT_THROW(CLandmarkScaleTrack(0.0, TScaleRefinementSettings{}), std::invalid_argument);
 }
 
-TEST(LandmarkScaleTrack, AResumedTrackKeepsItsEstimateAndLearnsOn)
+TEST(CLandmarkScaleTrack, AResumedTrackKeepsItsEstimateAndLearnsOn)
 {
 	DriveSettings d;
 	d.sightings = 20;
 	const auto first = drive(d, 3);
 	TScaleRefinementSettings settings;
 	settings.odometrySigma = d.odometrySigma;
-	auto resumed = LandmarkScaleTrack::resumed(first.track.state(), settings);
+	auto resumed = CLandmarkScaleTrack::resumed(first.track.state(), settings);
 	EXPECT_DOUBLE_EQ(resumed.scaleError(), first.track.scaleError());
 	EXPECT_DOUBLE_EQ(resumed.scaleErrorStd(), first.track.scaleErrorStd());
 	EXPECT_EQ(resumed.pairsUsed(), first.track.pairsUsed());
@@ -277,9 +277,9 @@ TEST(LandmarkScaleTrack, AResumedTrackKeepsItsEstimateAndLearnsOn)
 	EXPECT_DOUBLE_EQ(resumed.scaleError(), first.track.scaleError());
 }
 
-TEST(LandmarkScaleTrack, RejectsAResumedStateThatIsNotPositive)
+TEST(CLandmarkScaleTrack, RejectsAResumedStateThatIsNotPositive)
 {
-	EXPECT_THROW(LandmarkScaleTrack::resumed({0.0, 1.0, 0, 0}, {}), std::invalid_argument);
-	EXPECT_THROW(LandmarkScaleTrack::resumed({1.0, -1.0, 0, 0}, {}), std::invalid_argument);
-	EXPECT_THROW(LandmarkScaleTrack::resumed({NAN, 1.0, 0, 0}, {}), std::invalid_argument);
+	EXPECT_THROW(CLandmarkScaleTrack::resumed({0.0, 1.0, 0, 0}, {}), std::invalid_argument);
+	EXPECT_THROW(CLandmarkScaleTrack::resumed({1.0, -1.0, 0, 0}, {}), std::invalid_argument);
+	EXPECT_THROW(CLandmarkScaleTrack::resumed({NAN, 1.0, 0, 0}, {}), std::invalid_argument);
 }

@@ -1,5 +1,6 @@
+#include <libvslam/config/ConfigError.h>
+#include <libvslam/config/StrictRead.h>
 #include <libvslam/frontend/PinholeCamera.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
 #include <opencv2/calib3d.hpp>
 
 #include <cmath>
@@ -7,11 +8,29 @@
 
 using namespace vslam;
 
-ImageCalibration ImageCalibration::from(
-	const mrpt::img::TCamera& p, int width, int height, const TVisualFrontEndOptions& o,
+void CImageCalibration::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace config;
+	fx = readDouble(c, s, "fx", fx, Range::nonNegative());
+	fy = readDouble(c, s, "fy", fy, Range::nonNegative());
+	cx = readDouble(c, s, "cx", cx, Range::nonNegative());
+	cy = readDouble(c, s, "cy", cy, Range::nonNegative());
+	if ((fx > 0) != (fy > 0)) throw ConfigError("[" + s + "] fx and fy must be given together");
+}
+
+void CImageCalibration::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	c.write(s, "fx", fx, 30, 10, "Focal length override [px] (0: from each image)");
+	c.write(s, "fy", fy, 30, 10, "Focal length override [px] (0: from each image)");
+	c.write(s, "cx", cx, 30, 10, "Principal point override [px] (with fx, fy)");
+	c.write(s, "cy", cy, 30, 10, "Principal point override [px] (with fx, fy)");
+}
+
+CImageCalibration CImageCalibration::from(
+	const mrpt::img::TCamera& p, int width, int height, const TOptions& o,
 	const std::string& what)
 {
-	ImageCalibration c;
+	CImageCalibration c;
 	const bool overridden = o.fx > 0;
 	c.camera = overridden ? PinholeCamera{o.fx, o.fy, o.cx, o.cy}
 						  : PinholeCamera{p.fx(), p.fy(), p.cx(), p.cy()};
@@ -19,7 +38,7 @@ ImageCalibration ImageCalibration::from(
 		return std::invalid_argument(what + ": unusable camera calibration: " + why);
 	};
 	if (!(std::isfinite(c.camera.fx) && std::isfinite(c.camera.fy) && c.camera.fx > 0 && c.camera.fy > 0))
-		throw bad("no focal length (set [vslam_frontend] fx, fy, cx, cy if the data has none)");
+		throw bad("no focal length (set [vslam_camera] fx, fy, cx, cy if the data has none)");
 	if (!overridden && p.ncols > 0 && p.nrows > 0 &&
 		(static_cast<int>(p.ncols) != width || static_cast<int>(p.nrows) != height))
 		throw bad("calibrated for " + std::to_string(p.ncols) + "x" + std::to_string(p.nrows) +
@@ -40,7 +59,7 @@ ImageCalibration ImageCalibration::from(
 	return c;
 }
 
-std::vector<cv::Point2f> ImageCalibration::undistort(const std::vector<cv::Point2f>& pixels) const
+std::vector<cv::Point2f> CImageCalibration::undistort(const std::vector<cv::Point2f>& pixels) const
 {
 	if (pixels.empty() || cv::countNonZero(distortion) == 0) return pixels;
 	std::vector<cv::Point2f> out;

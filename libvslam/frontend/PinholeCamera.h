@@ -5,6 +5,7 @@
  * (mrpt::img::TCamera: intrinsics and distortion), so everything after
  * that (triangulation, PnP) uses K without distortion.
  */
+#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/img/TCamera.h>
 #include <opencv2/core.hpp>
 
@@ -13,8 +14,6 @@
 
 namespace vslam
 {
-struct TVisualFrontEndOptions;
-
 struct PinholeCamera
 {
 	double fx = 0, fy = 0, cx = 0, cy = 0;
@@ -33,14 +32,25 @@ struct PinholeCamera
  * std::invalid_argument naming `what` if the calibration is unusable (no
  * focal length, principal point outside the image, image size differing
  * from the calibrated one). */
-struct ImageCalibration
+struct CImageCalibration
 {
+	/** INI section [vslam_camera]: a calibration that replaces the
+	 * images' own, for data sets without one (fx = 0: the images'). */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam_camera";
+		double fx = 0, fy = 0, cx = 0, cy = 0;
+
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
 	PinholeCamera camera;
 	cv::Mat distortion;  //!< OpenCV order k1 k2 p1 p2 k3, CV_64F, may be all zero
 
-	static ImageCalibration from(
+	static CImageCalibration from(
 		const mrpt::img::TCamera& params, int imageWidth, int imageHeight,
-		const TVisualFrontEndOptions& overrides, const std::string& what);
+		const TOptions& overrides, const std::string& what);
 
 	/** Removes lens distortion from pixel positions (no-op without it). */
 	std::vector<cv::Point2f> undistort(const std::vector<cv::Point2f>& pixels) const;

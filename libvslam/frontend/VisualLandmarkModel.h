@@ -37,7 +37,7 @@ struct VisualLandmarkModel
 	/** Its last reported recognition (recognition_odometry_gate_s). */
 	std::optional<ReportedRecognition> lastReported;
 	/** Its scale, refined from later sightings (scale_refinement). */
-	LandmarkScaleTrack scale;
+	CLandmarkScaleTrack scale;
 
 	/** Bytes this landmark takes in memory (points, their depth stds, descriptors, fields,
 	 * the scale track's pairs). */

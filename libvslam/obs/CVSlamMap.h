@@ -67,7 +67,7 @@ class CVSlamMap : public mrpt::serialization::CSerializable
 		int32_t views = 0;
 		double reprojectionRms = 0;  //!< px
 		int32_t recognitions = 0;
-		/** Its scale estimate (LandmarkScaleTrack): information and
+		/** Its scale estimate (CLandmarkScaleTrack): information and
 		 * information-weighted sum of the scale error, and pairs judged. */
 		double scaleInformation = 1, scaleWeightedSum = 1;
 		int32_t scalePairsUsed = 0, scalePairsRejected = 0;

@@ -48,9 +48,10 @@ MatchStats summarize(const std::vector<std::pair<size_t, size_t>>& results)
 }  // namespace
 
 ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, const Trajectory& truth,
-	const TVisualFrontEndOptions& frontEnd, const ImageSequenceStatsOptions& o)
+	const CFeatureExtractor::TOptions& features, const CImageCalibration::TOptions& camera,
+	const ImageSequenceStatsOptions& o)
 {
-	const FeatureExtractor extractor(frontEnd);
+	const CFeatureExtractor extractor(features);
 	std::vector<Frame> frames;
 	CRawlogReader reader(rawlogFile);
 	RawlogStep step;
@@ -70,7 +71,7 @@ ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, cons
 			{
 				throw InputError(what + ": cannot load the image: " + e.what());
 			}
-			const auto calibration = ImageCalibration::from(img->cameraParams, pixels.cols, pixels.rows, frontEnd, what);
+			const auto calibration = CImageCalibration::from(img->cameraParams, pixels.cols, pixels.rows, camera, what);
 			frames.push_back({mrpt::Clock::toDouble(img->timestamp), extractor.extract(pixels, calibration)});
 		}
 	}
@@ -90,7 +91,7 @@ ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, cons
 	for (size_t i = 0, j = 0; i < frames.size(); i++)
 	{
 		while (j < frames.size() && frames[j].t < frames[i].t + o.pairSeconds - 1e-6) j++;
-		if (j < frames.size()) apart.push_back(matchPair(frames[i], frames[j], frontEnd.match_ratio));
+		if (j < frames.size()) apart.push_back(matchPair(frames[i], frames[j], features.match_ratio));
 	}
 	for (size_t j = 0; j < frames.size(); j++)
 	{
@@ -105,7 +106,7 @@ ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, cons
 			const double d = std::hypot(pi->x - pj->x, pi->y - pj->y), a = std::abs(se2::wrap(pi->phi - pj->phi));
 			if (d <= o.revisitMaxDistance && a <= o.revisitMaxAngle && d + a < best) best = d + a, bestI = i;
 		}
-		if (bestI < frames.size()) revisits.push_back(matchPair(frames[bestI], frames[j], frontEnd.match_ratio));
+		if (bestI < frames.size()) revisits.push_back(matchPair(frames[bestI], frames[j], features.match_ratio));
 	}
 	s.apart = summarize(apart);
 	s.revisits = summarize(revisits);

@@ -6,7 +6,7 @@
  * pairs of images taken at least `revisitMinSeconds` apart from nearly the
  * same true pose. Used on vslam-simul's rendered rawlogs (vslam-image-stats).
  */
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/io/Trajectory.h>
 
 #include <string>
@@ -41,5 +41,6 @@ struct ImageSequenceStats
 /** Reads the camera images of a rawlog (either format) and the true robot
  * path (for the revisits). Throws InputError naming the file or entry. */
 ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, const Trajectory& truth,
-	const TVisualFrontEndOptions& frontEnd, const ImageSequenceStatsOptions& options = {});
+	const CFeatureExtractor::TOptions& features, const CImageCalibration::TOptions& camera,
+	const ImageSequenceStatsOptions& options = {});
 }  // namespace vslam

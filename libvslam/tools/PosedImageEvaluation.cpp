@@ -78,9 +78,10 @@ namespace
 {
 /** Every view's features, their codes in the database's matching space. */
 std::vector<ImageFeatures> featuresOfViews(
-	const std::vector<StrechaView>& views, const TVisualFrontEndOptions& fe, const DescriptorCodec& codec)
+	const std::vector<StrechaView>& views, const CFeatureExtractor::TOptions& featureOptions,
+	const CImageCalibration::TOptions& camera, const DescriptorCodec& codec)
 {
-	const FeatureExtractor extractor(fe);
+	const CFeatureExtractor extractor(featureOptions);
 	std::vector<ImageFeatures> features;
 	for (const auto& v : views)
 	{
@@ -93,8 +94,8 @@ std::vector<ImageFeatures> featuresOfViews(
 		cam.k1(v.distortion[0]);
 		cam.k2(v.distortion[1]);
 		cam.k3(v.distortion[2]);
-		const auto calib = ImageCalibration::from(
-			cam, static_cast<int>(image.getWidth()), static_cast<int>(image.getHeight()), fe, v.imageFile);
+		const auto calib = CImageCalibration::from(
+			cam, static_cast<int>(image.getWidth()), static_cast<int>(image.getHeight()), camera, v.imageFile);
 		features.push_back(extractor.extract(image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), calib));
 		features.back().codes = codec.toMatchingSpace(features.back().descriptors);
 	}
@@ -141,30 +142,32 @@ void recordCreationAccuracy(const StrechaView& a, const StrechaView& b, const Cr
 }  // namespace
 
 PosedImageEvaluation vslam::evaluatePosedImages(
-	const std::vector<StrechaView>& views, const TVisualFrontEndOptions& fe,
+	const std::vector<StrechaView>& views, const CVisualFrontEnd::TOptions& fe,
 	const PosedImageEvaluationOptions& o)
 {
 	PosedImageEvaluation out;
 	const int n = static_cast<int>(views.size());
 	const mrpt::poses::CPose3D mount = calibratedMount(views);
 	out.mount = mount;
-	const DescriptorCodec codec(DescriptorCodec::parse(fe.descriptor_storage), fe.descriptor_dims);
+	const DescriptorCodec codec(DescriptorCodec::parse(fe.database.descriptor_storage), fe.database.descriptor_dims);
 	auto t0 = std::chrono::steady_clock::now();
-	const std::vector<ImageFeatures> features = featuresOfViews(views, fe, codec);
+	const std::vector<ImageFeatures> features = featuresOfViews(views, fe.features, fe.camera, codec);
 	out.featureSeconds = seconds(t0);
 	std::vector<se2::Pose> robot;
 	for (const auto& v : views) robot.push_back(robotPoseOfCamera(v));
 
 	std::mt19937 rng(o.seed);
 	std::normal_distribution<double> gauss;
-	const int k = fe.creation_views;
+	const CLandmarkCreator creator = fe.creator();
+	const CLandmarkRecognizer recognizer = fe.recognizer();
+	const int k = fe.creation.views;
 	for (int first = 0; first + k <= n; first++)
 	{
 		const std::vector<CreationView> creation = creationViews(features, robot, first, k, mount, o, rng, gauss);
 		std::vector<const CreationView*> ptrs;
 		for (const auto& c : creation) ptrs.push_back(&c);
 		t0 = std::chrono::steady_clock::now();
-		auto created = createLandmark(ptrs, mount, fe);
+		auto created = creator.create(ptrs, mount);
 		out.creationSeconds += seconds(t0);
 		out.landmarksTried++;
 		if (!created.landmark) continue;
@@ -184,7 +187,7 @@ PosedImageEvaluation vslam::evaluatePosedImages(
 			r.distance = std::hypot(truth.x, truth.y);
 			r.viewpointChangeDeg = std::abs(se2::wrap(robot[q].phi - robot[frameView].phi)) / kDeg;
 			t0 = std::chrono::steady_clock::now();
-			const auto m = recognizeLandmark(features[q], *created.landmark, mount, fe);
+			const auto m = recognizer.recognize(features[q], *created.landmark, mount);
 			out.recognitionSeconds += seconds(t0);
 			if (m)
 			{

@@ -13,7 +13,7 @@
  * that robot frame (the photographs share a common upward tilt); each
  * view's own deviation from it is left for the front-end to cope with.
  */
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/io/StrechaDataset.h>
 #include <libvslam/models/SE2.h>
 #include <mrpt/poses/CPose3D.h>
@@ -60,7 +60,7 @@ struct PosedImageEvaluation
 se2::Pose robotPoseOfCamera(const StrechaView& view);
 
 PosedImageEvaluation evaluatePosedImages(
-	const std::vector<StrechaView>& views, const TVisualFrontEndOptions& frontEnd,
+	const std::vector<StrechaView>& views, const CVisualFrontEnd::TOptions& frontEnd,
 	const PosedImageEvaluationOptions& options);
 
 /** Markdown tables: accuracy (medians), recognition share by viewpoint change. */

@@ -40,10 +40,10 @@ std::vector<StrechaView> dataset(const std::string& name)
 }
 
 /** Outdoor scenes: points up to 200 units away. */
-TVisualFrontEndOptions outdoorOptions()
+CVisualFrontEnd::TOptions outdoorOptions()
 {
-	TVisualFrontEndOptions o;
-	o.creation_max_depth = 200;
+	CVisualFrontEnd::TOptions o;
+	o.creation.max_depth = 200;
 	return o;
 }
 }  // namespace

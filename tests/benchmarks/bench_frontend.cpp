@@ -8,9 +8,9 @@
  * renderings of other rooms (rows drawn from a pool, with noise) at random
  * 3-D points, so the search meets realistic descriptors everywhere.
  *
- *   bench_frontend --benchmark_filter='Frame/640/1000/' [--set vslam_frontend.KEY=VALUE ...]
+ *   bench_frontend --benchmark_filter='Frame/640/1000/' [--set SECTION.KEY=VALUE ...]
  * Counters: frames/s (items_per_second) and ms per stage: features_ms,
- * search_ms, pose_ms, and with --set vslam_frontend.heading_change=true
+ * search_ms, pose_ms, and with --set vslam_heading_measurement.enabled=true
  * heading_ms (the heading change from a view 6 cm back and 2 deg turned);
  * bytes_per_landmark (points + stored descriptors) and
  * index_bytes_per_landmark.
@@ -25,6 +25,7 @@
 #include <benchmark/benchmark.h>
 #include <libvslam/config/Overrides.h>
 #include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/frontend/DescriptorCodec.h>
 #include <libvslam/frontend/DescriptorMatching.h>
 #include <libvslam/frontend/HeadingChange.h>
@@ -56,13 +57,13 @@ mrpt::img::TCamera camera(int width)
 
 std::vector<vslam::config::Override> gOverrides;
 
-TVisualFrontEndOptions benchOptions() { return loadFrontEndOptions("", gOverrides); }
+CVisualFrontEnd::TOptions benchOptions() { return loadFrontEndOptions("", gOverrides); }
 
 struct Scene
 {
-	TVisualFrontEndOptions options = benchOptions();
-	FeatureExtractor extractor{options};
-	ImageCalibration calibration;
+	CVisualFrontEnd::TOptions options = benchOptions();
+	CFeatureExtractor extractor{options.features};
+	CImageCalibration calibration;
 	cv::Mat query;  //!< the image every iteration processes
 	ImageFeatures previous;  //!< the view before it, for the heading change
 	double chord = 0;  //!< m between the two
@@ -73,8 +74,8 @@ std::unique_ptr<Scene> makeScene(int width, int landmarks)
 {
 	auto s = std::make_unique<Scene>();
 	const auto cam = camera(width);
-	s->calibration = ImageCalibration::from(cam, cam.ncols, cam.nrows, s->options, "bench");
-	s->database = std::make_unique<CLandmarkDatabase>(s->options);
+	s->calibration = CImageCalibration::from(cam, cam.ncols, cam.nrows, s->options.camera, "bench");
+	s->database = std::make_unique<CLandmarkDatabase>(s->options.database, s->options.features.match_ratio);
 	const vslam::testing::RoomRenderer room(5.0, 4.0, 2.5, 42);
 	const auto render = [&](const vslam::testing::RoomRenderer& r, const mrpt::poses::CPose2D& p) {
 		return r.render(cam, mrpt::poses::CPose3D(p) + kMount);
@@ -87,7 +88,7 @@ std::unique_ptr<Scene> makeScene(int width, int landmarks)
 		views[i].features = s->extractor.extract(render(room, p), s->calibration);
 		views[i].cameraPose = mrpt::poses::CPose3D(p) + kMount;
 	}
-	auto created = createLandmark({&views[0], &views[1], &views[2]}, kMount, s->options);
+	auto created = s->options.creator().create({&views[0], &views[1], &views[2]}, kMount);
 	if (!created.landmark) throw std::runtime_error("bench: no landmark: " + created.why);
 	created.landmark->id = 0;
 	s->database->insert(*created.landmark);
@@ -137,6 +138,8 @@ void Frame(benchmark::State& state)
 	const auto scene = makeScene(width, landmarks);
 	double features = 0, search = 0, pose = 0, heading = 0;
 	size_t recognized = 0, headingChanges = 0;
+	const CLandmarkRecognizer recognizer = scene->options.recognizer();
+	const CHeadingChangeEstimator headingEstimator = scene->options.headingEstimator();
 	for (auto _ : state)
 	{
 		auto t = std::chrono::steady_clock::now();
@@ -148,12 +151,12 @@ void Frame(benchmark::State& state)
 		search += ms(t);
 		t = std::chrono::steady_clock::now();
 		for (const auto& c : candidates)
-			if (recognizeLandmark(f, *scene->database->find(c.id), kMount, scene->options)) recognized++;
+			if (recognizer.recognize(f, *scene->database->find(c.id), kMount)) recognized++;
 		pose += ms(t);
-		if (scene->options.heading_change)
+		if (scene->options.heading.enabled)
 		{
 			t = std::chrono::steady_clock::now();
-			if (estimateHeadingChange(scene->previous, f, kMount, scene->chord, headingChangeSettings(scene->options)))
+			if (headingEstimator.estimate(scene->previous, f, kMount, scene->chord))
 				headingChanges++;
 			heading += ms(t);
 		}
@@ -163,7 +166,7 @@ void Frame(benchmark::State& state)
 	state.counters["features_ms"] = features / n;
 	state.counters["search_ms"] = search / n;
 	state.counters["pose_ms"] = pose / n;
-	if (scene->options.heading_change)
+	if (scene->options.heading.enabled)
 	{
 		state.counters["heading_ms"] = heading / n;
 		state.counters["heading_changes_per_frame"] = headingChanges / n;
@@ -233,7 +236,7 @@ BENCHMARK(Frame)
 int main(int argc, char** argv)
 {
 	vslam::keepImageBuffersInTheProcess();  // as the apps that run the front-end
-	// --set vslam_frontend.KEY=VALUE (repeatable) before the benchmark's own flags.
+	// --set SECTION.KEY=VALUE (repeatable) before the benchmark's own flags.
 	std::vector<char*> rest{argv[0]};
 	for (int i = 1; i < argc; i++)
 	{

@@ -77,7 +77,7 @@ void Load(benchmark::State& state)
 	writeVSlamMap(mapFile(landmarks), syntheticMap(landmarks));
 	for (auto _ : state)
 	{
-		CVisualFrontEnd frontEnd{TVisualFrontEndOptions()};
+		CVisualFrontEnd frontEnd{CVisualFrontEnd::TOptions()};
 		frontEnd.loadMap(readVSlamMap(mapFile(landmarks)), mrpt::poses::CPose2D());
 		benchmark::DoNotOptimize(frontEnd.database().size());
 	}

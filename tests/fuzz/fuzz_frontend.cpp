@@ -34,8 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	const size_t n = size - kHeader;
 	for (size_t i = 0; i < pixels.total() * pixels.elemSize(); i++) pixels.data[i] = src[i % n];
 	obs.image = mrpt::img::CImage(pixels, mrpt::img::SHALLOW_COPY);
-	vslam::TVisualFrontEndOptions options;
-	options.creation_min_points = 6;
+	vslam::CVisualFrontEnd::TOptions options;
+	options.creation.min_points = 6;
 	vslam::CVisualFrontEnd frontEnd(options);
 	try
 	{

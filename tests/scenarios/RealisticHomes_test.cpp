@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <libvslam/config/IniText.h>
 #include <libvslam/tools/ImageSequenceStats.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/RawlogWriting.h>
 #include <libvslam/sim/CVisualSimulator.h>
@@ -38,7 +38,7 @@ TEST(RealisticHomes, FeaturesPerFrameAreThoseOfARealHome)
 		const std::string rawlog = (dir.path() / "home.rawlog").string();
 		const VisualSimRun run = CVisualSimulator(o, world.plan).run(CRawlogReader::imagesDirectory(rawlog));
 		writeActionFrameRawlog(rawlog, run.entries);
-		const auto stats = computeImageSequenceStats(rawlog, run.truePath, TVisualFrontEndOptions());
+		const auto stats = computeImageSequenceStats(rawlog, run.truePath, CFeatureExtractor::TOptions(), CImageCalibration::TOptions());
 		features.insert(features.end(), stats.featureCounts.begin(), stats.featureCounts.end());
 	}
 	std::sort(features.begin(), features.end());

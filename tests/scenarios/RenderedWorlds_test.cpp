@@ -3,7 +3,7 @@
  * side, at the robot's camera height, sees enough SIFT features. */
 #include <gtest/gtest.h>
 #include <libvslam/frontend/ImageFeatures.h>
-#include <libvslam/frontend/TVisualFrontEndOptions.h>
+#include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/sim/CameraImaging.h>
 #include <libvslam/sim/CameraRenderer.h>
 #include <libvslam/sim/TVisualSimOptions.h>
@@ -78,9 +78,8 @@ void expectTextureOnEveryFace(const std::string& worldFile, const Eigen::Vector2
 	cam.setIntrinsicParamsFromValues(250, 250, 159.5, 119.5);
 	cam.dist.fill(0);
 	CameraRenderer renderer(cam);
-	const TVisualFrontEndOptions options;
-	const FeatureExtractor extractor(options);
-	const auto calibration = ImageCalibration::from(cam, 320, 240, options, "test");
+	const CFeatureExtractor extractor(CFeatureExtractor::TOptions{});
+	const auto calibration = CImageCalibration::from(cam, 320, 240, CImageCalibration::TOptions(), "test");
 	const world::FreeSpace free(plan, 0.2, start);
 	const auto segments = plan.obstacleSegments();
 	std::vector<size_t> counts;
