@@ -63,7 +63,7 @@ double positiveNumber(const std::string& option, const char* text)
 	return v;
 }
 
-void printAte(const std::string& prefix, const vslam::AteStats& s, const vslam::AteOptions& o)
+void printAte(const std::string& prefix, const vslam::AteStats& s, const vslam::TAteOptions& o)
 {
 	const char* name = !o.align ? "ate" : o.alignScale ? "ate_sim2_aligned" : "ate_se2_aligned";
 	std::printf("%s%s: poses %zu rmse %.4f mean %.4f median %.4f max %.4f heading_rmse_deg %.3f", prefix.c_str(),
@@ -72,10 +72,10 @@ void printAte(const std::string& prefix, const vslam::AteStats& s, const vslam::
 	std::printf("\n");
 }
 
-void printRpe(const std::string& prefix, const vslam::RpeStats& s, const vslam::RpeOptions& o)
+void printRpe(const std::string& prefix, const vslam::RpeStats& s, const vslam::TRpeOptions& o)
 {
 	char window[64];
-	std::snprintf(window, sizeof window, "%g%s", o.delta, o.window == vslam::RpeOptions::Window::Time ? "s" : "m");
+	std::snprintf(window, sizeof window, "%g%s", o.delta, o.window == vslam::TRpeOptions::Window::Time ? "s" : "m");
 	std::printf(
 		"%srpe_%s: pairs %zu trans_rmse %.4f trans_mean %.4f trans_median %.4f trans_max %.4f "
 		"rot_rmse_deg %.3f rot_mean_deg %.3f drift_pct %.2f\n",
@@ -87,7 +87,7 @@ void printRpe(const std::string& prefix, const vslam::RpeStats& s, const vslam::
 /** Both ATE lines (the asked-for one first), the one after the best
  * similarity, and the RPE lines; returns the asked-for ATE. */
 vslam::AteStats report(const std::string& prefix, const vslam::Trajectory& estimate, const vslam::Trajectory& truth,
-	vslam::AteOptions o, const std::vector<vslam::RpeOptions>& windows)
+	vslam::TAteOptions o, const std::vector<vslam::TRpeOptions>& windows)
 {
 	const vslam::AteStats asked = vslam::computeAte(estimate, truth, o);
 	if (asked.associated == 0)
@@ -129,16 +129,16 @@ void writeErrorCsv(const std::string& file, const std::vector<std::pair<std::str
 struct EvalCommand
 {
 	bool help = false;
-	vslam::AteOptions ate;
+	vslam::TAteOptions ate;
 	double from = 0, to = std::numeric_limits<double>::infinity();
-	std::vector<vslam::RpeOptions> windows;
+	std::vector<vslam::TRpeOptions> windows;
 	std::vector<std::string> files;  //!< estimate, ground truth
 	std::string runDir, csvFile, plotFile, figuresDir, odometryFile, worldFile, trueMapFile, mapFile, scenePng;
 };
 
 EvalCommand parseCommand(int argc, const char** argv)
 {
-	using vslam::RpeOptions;
+	using vslam::TRpeOptions;
 	EvalCommand c;
 	for (int i = 1; i < argc; i++)
 	{
@@ -168,8 +168,8 @@ EvalCommand parseCommand(int argc, const char** argv)
 			c.to = positiveNumber(a, argv[++i]);
 		else if ((a == "--rpe-time" || a == "--rpe-distance") && hasValue)
 		{
-			RpeOptions w;
-			w.window = a == "--rpe-time" ? RpeOptions::Window::Time : RpeOptions::Window::Distance;
+			TRpeOptions w;
+			w.window = a == "--rpe-time" ? TRpeOptions::Window::Time : TRpeOptions::Window::Distance;
 			w.delta = positiveNumber(a, argv[++i]);
 			c.windows.push_back(w);
 		}
@@ -190,7 +190,7 @@ EvalCommand parseCommand(int argc, const char** argv)
 	}
 	if (c.files.size() != 2) throw std::invalid_argument("expected ESTIMATE GROUND_TRUTH");
 	if (!c.scenePng.empty() && c.runDir.empty()) throw std::invalid_argument("--scene-png needs --run DIR");
-	if (c.windows.empty()) c.windows.push_back(RpeOptions());  // 1 s, as the TUM tools
+	if (c.windows.empty()) c.windows.push_back(TRpeOptions());  // 1 s, as the TUM tools
 	if (!(c.from < c.to)) throw std::invalid_argument("--from must be before --to");
 	if (!c.trueMapFile.empty() && c.mapFile.empty()) throw std::invalid_argument("--landmarks needs --map FILE (or --run)");
 	return c;
@@ -230,7 +230,7 @@ void evaluate(const EvalCommand& c)
 	if (!c.odometryFile.empty())
 	{
 		odometry = timeWindow(readTrajectory(c.odometryFile), t0, c.from, c.to);
-		AteOptions raw = c.ate;
+		TAteOptions raw = c.ate;
 		raw.align = false;  // odometry starts where the truth does
 		csv.push_back({"odometry", report("odometry_", *odometry, truth, raw, c.windows)});
 	}
@@ -238,7 +238,7 @@ void evaluate(const EvalCommand& c)
 	if (!c.trueMapFile.empty())
 	{
 		const LandmarkMap map = readLandmarkMap(c.mapFile, 0, 0), trueMap = readLandmarkMap(c.trueMapFile, 0, 0);
-		AteOptions align = c.ate;
+		TAteOptions align = c.ate;
 		align.align = true;
 		printMapError("map", computeMapError(map, trueMap));
 		printMapError("map_se2_aligned", computeMapError(map, trueMap, computeAte(estimate, truth, align).alignment));

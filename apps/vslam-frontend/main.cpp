@@ -43,7 +43,7 @@
 #include <libvslam/core/InputError.h>
 #include <libvslam/eval/HeadingChangeAccuracy.h>
 #include <libvslam/eval/LandmarkScaleOracle.h>
-#include <libvslam/filter/TVSlamFilterOptions.h>
+#include <libvslam/filter/CVSlamParticleFilter.h>
 #include <libvslam/frontend/ImageBufferAllocation.h>
 #include <libvslam/frontend/ImagesToMeasurements.h>
 #include <libvslam/io/CRawlogReader.h>
@@ -64,11 +64,11 @@
 
 namespace
 {
-vslam::TVSlamFilterOptions loadFilterOptions(
+vslam::CVSlamParticleFilter::TOptions loadFilterOptions(
 	const std::string& iniFile, const std::vector<vslam::config::Override>& overrides)
 {
 	using namespace vslam;
-	TVSlamFilterOptions filter;
+	CVSlamParticleFilter::TOptions filter;
 	try
 	{
 		const auto cfg =
@@ -85,7 +85,7 @@ vslam::TVSlamFilterOptions loadFilterOptions(
 
 void printAccuracy(const std::vector<vslam::LandmarkMeasurementRecord>& records,
 	const std::map<int64_t, double>& creationTimes, const std::string& groundTruthFile,
-	const vslam::TVSlamFilterOptions& filter, const std::string& csvFile)
+	const vslam::CVSlamParticleFilter::TOptions& filter, const std::string& csvFile)
 {
 	using namespace vslam;
 	const auto a = evaluateMeasurements(
@@ -420,7 +420,7 @@ int main(int argc, const char** argv)
 		const CVisualFrontEnd::TOptions options = loadFrontEndOptions(c.iniFile, c.overrides);
 		// Sigma_vis and the pre-filter of the INI and the --set overrides, for
 		// the accuracy figures; every vslam key checked before the long run.
-		const TVSlamFilterOptions filter = loadFilterOptions(c.iniFile, c.overrides);
+		const CVSlamParticleFilter::TOptions filter = loadFilterOptions(c.iniFile, c.overrides);
 
 		const auto start = std::chrono::steady_clock::now();
 		CVisualFrontEnd frontEnd(options);

@@ -34,7 +34,7 @@ int main(int argc, const char** argv)
 		std::vector<std::string> positional;
 		std::vector<config::Override> overrides;
 		std::string iniFile, csvFile;
-		PosedImageEvaluationOptions options;
+		TPosedImageEvaluationOptions options;
 		for (int i = 1; i < argc; i++)
 		{
 			const std::string a = argv[i];

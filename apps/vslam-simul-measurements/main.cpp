@@ -37,16 +37,16 @@ int main(int argc, const char** argv)
 		}
 		if (args.has("--print-default-config"))
 		{
-			const std::string text = config::toIniText(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
+			const std::string text = config::toIniText(CMeasurementSimulator::TOptions(), CMeasurementSimulator::TOptions::kSection);
 			config::NumericKeyRecorder numbers;  // the ranges the readers check
-			TMeasurementSimOptions().loadFromConfigFile(mrpt::config::CConfigFileMemory(), TMeasurementSimOptions::kSection);
+			CMeasurementSimulator::TOptions().loadFromConfigFile(mrpt::config::CConfigFileMemory(), CMeasurementSimulator::TOptions::kSection);
 			std::cout << (args.has("--markdown") ? config::markdownReference(text, numbers.keys()) : text);
 			return 0;
 		}
 		const auto& positional = args.positional;
 		if (positional.size() != 2) throw std::invalid_argument("expected CONFIG.ini OUTPUT.rawlog");
 		const std::string text = config::readIniFile(positional[0]);
-		TMeasurementSimOptions options;
+		CMeasurementSimulator::TOptions options;
 		try
 		{
 			options = loadMeasurementSimOptions(text, args.overrides);

@@ -58,11 +58,11 @@ int main(int argc, const char** argv)
 		}
 		if (args.has("--print-default-config"))
 		{
-			const std::string text = config::toIniText(TVisualSimOptions(), TVisualSimOptions::kSection);
+			const std::string text = config::toIniText(CVisualSimulator::TOptions(), CVisualSimulator::TOptions::kSection);
 			config::NumericKeyRecorder numbers;  // the ranges the readers check
 			// The defaults with a generated home: a scenario needs a world.
-			TVisualSimOptions().loadFromConfigFile(
-				mrpt::config::CConfigFileMemory("[vslam_simul]\nworld_seed = 1\n"), TVisualSimOptions::kSection);
+			CVisualSimulator::TOptions().loadFromConfigFile(
+				mrpt::config::CConfigFileMemory("[vslam_simul]\nworld_seed = 1\n"), CVisualSimulator::TOptions::kSection);
 			std::cout << (args.has("--markdown") ? config::markdownReference(text, numbers.keys()) : text);
 			return 0;
 		}
@@ -72,7 +72,7 @@ int main(int argc, const char** argv)
 		if (positional.size() != 2) throw std::invalid_argument("expected CONFIG.ini OUTPUT.rawlog");
 		const std::string& ini = positional[0];
 		const std::string text = config::readIniFile(ini);
-		TVisualSimOptions options;
+		CVisualSimulator::TOptions options;
 		try
 		{
 			options = loadVisualSimOptions(text, overrides, std::filesystem::path(ini).parent_path().string());

@@ -65,8 +65,8 @@ std::string CVSlamApp::usage()
 std::string CVSlamApp::defaultConfigText()
 {
 	mrpt::config::CConfigFileMemory c;
-	TVSlamAppOptions().saveToConfigFile(c, TVSlamAppOptions::kSection);
-	TVSlamFilterOptions().saveToConfig(c);
+	CVSlamApp::TOptions().saveToConfigFile(c, CVSlamApp::TOptions::kSection);
+	CVSlamParticleFilter::TOptions().saveToConfig(c);
 	CVisualFrontEnd::TOptions().saveToConfig(c);
 	std::string text;
 	c.getContent(text);
@@ -77,8 +77,8 @@ std::vector<config::NumericKey> CVSlamApp::numericKeys()
 {
 	config::NumericKeyRecorder recorder;
 	const mrpt::config::CConfigFileMemory none;  // every key at its default
-	TVSlamAppOptions().loadFromConfigFile(none, TVSlamAppOptions::kSection);
-	TVSlamFilterOptions().loadFromConfig(none);
+	CVSlamApp::TOptions().loadFromConfigFile(none, CVSlamApp::TOptions::kSection);
+	CVSlamParticleFilter::TOptions().loadFromConfig(none);
 	CVisualFrontEnd::TOptions().loadFromConfig(none);
 	return recorder.keys();
 }
@@ -86,8 +86,8 @@ std::vector<config::NumericKey> CVSlamApp::numericKeys()
 config::KnownKeys CVSlamApp::knownKeys()
 {
 	config::KnownKeys known;
-	known.addFromOptions(TVSlamAppOptions(), TVSlamAppOptions::kSection);
-	TVSlamFilterOptions().registerKnownKeys(known);
+	known.addFromOptions(CVSlamApp::TOptions(), CVSlamApp::TOptions::kSection);
+	CVSlamParticleFilter::TOptions().registerKnownKeys(known);
 	CVisualFrontEnd::TOptions().registerKnownKeys(known);
 	return known;
 }
@@ -116,7 +116,7 @@ void CVSlamApp::loadConfig(const std::string& file, const std::vector<std::strin
 	params = config::parseIniWithOverrides(text, parsed);
 
 	config::checkNoUnknownKeys(params, knownKeys());
-	appOptions.loadFromConfigFile(params, TVSlamAppOptions::kSection);
+	appOptions.loadFromConfigFile(params, CVSlamApp::TOptions::kSection);
 	filterOptions.loadFromConfig(params);
 	frontEndOptions.loadFromConfig(params);
 	frontEndOptions.takeOdometryNoiseFrom(filterOptions.motion.sigma_T);
@@ -313,7 +313,7 @@ void checkFilterIsFinite(const CVSlamParticleFilter& filter, uint64_t step, cons
 /** Everything one run keeps between its steps. */
 struct CVSlamApp::RunState
 {
-	RunState(const RunOutputFolder& folder, const TVSlamFilterOptions& options, const std::string& runId)
+	RunState(const RunOutputFolder& folder, const CVSlamParticleFilter::TOptions& options, const std::string& runId)
 		: outputs(folder, runId), filter(options), controllerPose(options.smoothedPose), odo(options.pf.initialPose)
 	{
 		pf.m_options = options.pf.toMrpt();
@@ -552,13 +552,13 @@ std::string CVSlamApp::effectiveConfigText(uint64_t seed, const std::string& out
 		{"prior_map_file", absolute(m_priorMapFile)}, {"RANDOM_SEED", std::to_string(seed)}};
 	std::vector<std::string> sections;
 	params.getAllSections(sections);
-	if (std::find(sections.begin(), sections.end(), TVSlamAppOptions::kSection) == sections.end())
-		sections.insert(sections.begin(), TVSlamAppOptions::kSection);
+	if (std::find(sections.begin(), sections.end(), CVSlamApp::TOptions::kSection) == sections.end())
+		sections.insert(sections.begin(), CVSlamApp::TOptions::kSection);
 	std::ostringstream text;
 	for (const auto& section : sections)
 	{
 		text << "\n[" << section << "]\n";
-		const bool app = section == TVSlamAppOptions::kSection;
+		const bool app = section == CVSlamApp::TOptions::kSection;
 		std::vector<std::string> keys;
 		params.getAllKeys(section, keys);
 		for (const auto& key : keys)

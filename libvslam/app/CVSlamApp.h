@@ -22,15 +22,17 @@
  */
 #include <libvslam/app/RunOutputFolder.h>
 #include <libvslam/app/RunSummary.h>
-#include <libvslam/app/TVSlamAppOptions.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
-#include <libvslam/filter/TVSlamFilterOptions.h>
+#include <libvslam/filter/CVSlamParticleFilter.h>
 #include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/io/CRawlogReader.h>
 #include <libvslam/io/Trajectory.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/config/CLoadableOptions.h>
 
+#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,6 +55,48 @@ class CVSlamApp
 		kInterrupted = 130
 	};
 
+	/** The [vslam] section: what to read, where to write, the random seed.
+	 * Input files given in the INI are relative to the INI file's folder;
+	 * output_dir and command-line paths are relative to the working folder. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		static constexpr const char* kSection = "vslam";
+
+		std::string rawlog_file;
+		std::string output_dir = "vslam_out";
+		/** -1: seed from the clock (the seed used is written to the summary). */
+		int64_t RANDOM_SEED = -1;
+		/** Optional ground truth (TUM or rbpf-slam path format) for the
+		 * summary's error figures. */
+		std::string ground_truth_file;
+		/** Optional map to start from (localization in a known map, or map
+		 * continuation): vslam's final_map.vslam (landmarks and what the
+		 * camera recognizes them by), final_map.txt, or rows 'id x y' (points)
+		 * / 'id x y phi' (poses); see io/LandmarkMapFile.h. */
+		std::string prior_map_file;
+		/** Keep the prior map fixed: no landmark is added, updated or removed. */
+		bool localization_only = false;
+		/** The start pose is unknown: find it in the prior map (global localization). */
+		bool initial_pose_unknown = false;
+		/** Uncertainty of map rows that carry no covariance. */
+		double prior_map_std_xy = 0.05;  //!< m
+		double prior_map_std_phi = 2 * M_PI / 180;  //!< rad (INI: degrees)
+		/** Start the filter at the ground-truth pose of the first step (both
+		 * trajectories then start at the robot's first pose), instead of
+		 * [vslam_particle_filter] initial_x/y/phi_deg. */
+		bool initial_pose_from_ground_truth = false;
+		/** Process at most this many rawlog steps (0: all). */
+		uint64_t max_steps = 0;
+		bool show_progress = true;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& cfg,
+			const std::string& section) const override;
+	};
+
 	/** Parses arguments and configuration; throws ConfigError. Returns
 	 * false if there is nothing to run (--help, --version, ...). */
 	bool initialize(int argc, const char** argv);
@@ -63,8 +107,8 @@ class CVSlamApp
 
 	/** The effective configuration (INI + overrides). */
 	mrpt::config::CConfigFileMemory params;
-	TVSlamAppOptions appOptions;
-	TVSlamFilterOptions filterOptions;
+	TOptions appOptions;
+	CVSlamParticleFilter::TOptions filterOptions;
 	CVisualFrontEnd::TOptions frontEndOptions;  //!< used when the rawlog has images
 
 	static std::string usage();

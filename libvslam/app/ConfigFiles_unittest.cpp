@@ -8,7 +8,7 @@
 #include <libvslam/frontend/CVisualFrontEnd.h>
 #include <libvslam/models/CMotionModel.h>
 #include <libvslam/sim/CVisualSimulator.h>
-#include <libvslam/sim/TMeasurementSimOptions.h>
+#include <libvslam/sim/CMeasurementSimulator.h>
 #include <libvslam/sim/SimulatedWorld.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -48,7 +48,7 @@ std::string effectiveOptions(const fs::path& ini)
 	const char* argv[] = {"vslam", file.c_str(), "unused.rawlog"};
 	EXPECT_TRUE(app.initialize(3, argv));
 	mrpt::config::CConfigFileMemory c;
-	app.appOptions.saveToConfigFile(c, TVSlamAppOptions::kSection);
+	app.appOptions.saveToConfigFile(c, CVSlamApp::TOptions::kSection);
 	app.filterOptions.saveToConfig(c);
 	std::string text;
 	c.getContent(text);
@@ -79,8 +79,8 @@ TEST(ConfigFiles, TheExampleListsEveryKeyOfEverySection)
 TEST(ConfigFiles, TheExampleShowsTheDefaults)
 {
 	mrpt::config::CConfigFileMemory defaults;
-	TVSlamAppOptions().saveToConfigFile(defaults, TVSlamAppOptions::kSection);
-	TVSlamFilterOptions().saveToConfig(defaults);
+	CVSlamApp::TOptions().saveToConfigFile(defaults, CVSlamApp::TOptions::kSection);
+	CVSlamParticleFilter::TOptions().saveToConfig(defaults);
 	std::string expected;
 	defaults.getContent(expected);
 	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), expected);
@@ -102,7 +102,7 @@ TEST(ConfigFiles, TheDemoIsTheCameraConfigurationWithTheDemosFiles)
 		camera.getAllKeys(section, keys);
 		for (const auto& key : keys)
 		{
-			if (lower(section) == TVSlamAppOptions::kSection && demoOnly.count(lower(key))) continue;
+			if (lower(section) == CVSlamApp::TOptions::kSection && demoOnly.count(lower(key))) continue;
 			EXPECT_EQ(demo.read_string(section, key, "<absent>"), camera.read_string(section, key, "<absent>"))
 				<< "[" << section << "] " << key;
 		}
@@ -127,19 +127,19 @@ TEST(ConfigFiles, EveryShippedVslamIniLoads)
 TEST(ConfigFiles, SimulatorIniFilesListKnownKeysOnly)
 {
 	config::KnownKeys known;
-	known.addFromOptions(TMeasurementSimOptions(), TMeasurementSimOptions::kSection);
+	known.addFromOptions(CMeasurementSimulator::TOptions(), CMeasurementSimulator::TOptions::kSection);
 	const auto example = readIni(kConfigDir / "simul_measurements_example.ini");
-	for (const auto& key : known.keys(TMeasurementSimOptions::kSection))
-		EXPECT_TRUE(example.keyExists(TMeasurementSimOptions::kSection, key)) << key;
+	for (const auto& key : known.keys(CMeasurementSimulator::TOptions::kSection))
+		EXPECT_TRUE(example.keyExists(CMeasurementSimulator::TOptions::kSection, key)) << key;
 	for (const auto& e : fs::directory_iterator(kConfigDir))
 	{
 		if (e.path().filename().string().rfind("simul_", 0) != 0) continue;
 		SCOPED_TRACE(e.path().filename().string());
 		const auto ini = readIni(e.path());
-		if (!ini.sectionExists(TMeasurementSimOptions::kSection)) continue;  // vslam-simul's
-		EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known, TMeasurementSimOptions::kSection));
-		TMeasurementSimOptions o;
-		EXPECT_NO_THROW(o.loadFromConfigFile(ini, TMeasurementSimOptions::kSection));
+		if (!ini.sectionExists(CMeasurementSimulator::TOptions::kSection)) continue;  // vslam-simul's
+		EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known, CMeasurementSimulator::TOptions::kSection));
+		CMeasurementSimulator::TOptions o;
+		EXPECT_NO_THROW(o.loadFromConfigFile(ini, CMeasurementSimulator::TOptions::kSection));
 	}
 }
 
@@ -209,15 +209,15 @@ TEST(ConfigFiles, AKeyOfTheFormerFrontEndSectionSaysWhereItWent)
 
 TEST(ConfigFiles, RenderedSimulatorIniFilesLoadAndTheExampleShowsTheDefaults)
 {
-	const std::string section = TVisualSimOptions::kSection;
+	const std::string section = CVisualSimulator::TOptions::kSection;
 	config::KnownKeys known;
-	known.addFromOptions(TVisualSimOptions(), section);
+	known.addFromOptions(CVisualSimulator::TOptions(), section);
 	const auto example = readIni(kConfigDir / "simul_example.ini");
 	for (const auto& key : known.keys(section)) EXPECT_TRUE(example.keyExists(section, key)) << key;
-	TVisualSimOptions fromExample;
+	CVisualSimulator::TOptions fromExample;
 	fromExample.loadFromConfigFile(example, section);
 	fromExample.world_file.clear();  // the one key without a default
-	EXPECT_EQ(config::toIniText(fromExample, section), config::toIniText(TVisualSimOptions(), section));
+	EXPECT_EQ(config::toIniText(fromExample, section), config::toIniText(CVisualSimulator::TOptions(), section));
 	size_t checked = 0;
 	for (const auto& e : fs::directory_iterator(kConfigDir))
 	{
@@ -229,7 +229,7 @@ TEST(ConfigFiles, RenderedSimulatorIniFilesLoadAndTheExampleShowsTheDefaults)
 		// The options load, and the world (its file, or the home generated
 		// from world_seed) and the path or people in it are valid (textures
 		// exist, waypoints are collision-free).
-		TVisualSimOptions o;
+		CVisualSimulator::TOptions o;
 		ASSERT_NO_THROW(o = loadVisualSimOptions(text.str(), {}, kConfigDir.string()));
 		if (o.world_seed != 0 && !fs::is_directory("/usr/share/sweethome3d/furniture"))
 		{

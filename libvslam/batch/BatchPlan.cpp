@@ -201,11 +201,11 @@ class BatchFile
 };
 
 /** The [slurm] section: what vslam-batch --slurm asks of the cluster. */
-SlurmSettings readSlurmSettings(const BatchFile& f)
+TSlurmOptions readSlurmSettings(const BatchFile& f)
 {
 	f.onlyKeys("slurm", {"cpus_per_task", "mem_mib", "time_minutes", "throttle", "max_array_size", "partition", "account",
 							"sbatch_options"});
-	SlurmSettings s;
+	TSlurmOptions s;
 	s.cpusPerTask = f.wholeNumber("slurm", "cpus_per_task", 1, 1024, 1);
 	s.memMiB = f.wholeNumber("slurm", "mem_mib", 0, 1 << 24, 0);
 	s.timeMinutes = f.wholeNumber("slurm", "time_minutes", 0, 60 * 24 * 365, 0);

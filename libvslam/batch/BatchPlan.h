@@ -74,7 +74,7 @@ struct Task
 };
 
 /** What the batch asks of a Slurm cluster ([slurm]); see SlurmSubmission.h. */
-struct SlurmSettings
+struct TSlurmOptions
 {
 	int cpusPerTask = 1;
 	int memMiB = 0;  //!< per task; 0: measured (or a default when nothing is measured)
@@ -93,7 +93,7 @@ struct BatchPlan
 	std::vector<std::string> overrides;
 	std::vector<int> seeds;
 	int jobs = 0;
-	SlurmSettings slurm;
+	TSlurmOptions slurm;
 	/** rbpf-slam's configuration (its peers' runs are scored beside vslam's), or empty. */
 	std::string rbpfSlamIni;
 	std::vector<Scenario> scenarios;

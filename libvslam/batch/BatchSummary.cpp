@@ -163,7 +163,7 @@ std::string writeBatchSummary(const BatchPlan& plan)
 		}
 	md << againstPeers(plan, byRun);
 	std::ofstream(plan.outputDir + "/summary.md") << md.str();
-	ChartOptions o;
+	TChartOptions o;
 	o.title = "ATE RMSE over seeds (mean +- std): vslam (blue), odometry alone (red); "
 			  "'scenario k': its k-th variation in summary.md";
 	o.xLabel = "";

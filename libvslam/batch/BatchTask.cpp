@@ -84,7 +84,7 @@ Metrics scoreRun(const BatchPlan& plan, const Task& task, double wallSeconds, do
 	const Trajectory odometry = readTrajectory(out + "/odometry_path.tum");
 	const Trajectory truth = readTrajectory(plan.groundTruthOf(s, task.seed));
 	Metrics m;
-	AteOptions raw, aligned;
+	TAteOptions raw, aligned;
 	aligned.align = true;
 	const AteStats ate = computeAte(estimate, truth, raw), ateAligned = computeAte(estimate, truth, aligned);
 	if (ate.associated == 0) throw InputError("no pose of the estimate has ground truth at its time");
@@ -195,7 +195,7 @@ Metrics scorePeer(const BatchPlan& plan, const Task& task, double wallSeconds, d
 	}
 	if (path.empty()) throw InputError("rbpf-slam wrote no path in '" + task.dir + "/out'");
 	writeTumTrajectory(task.dir + "/rbpf-slam.tum", path);
-	AteOptions aligned;
+	TAteOptions aligned;
 	aligned.align = true;
 	const AteStats ate = computeAte(path, readTrajectory(plan.groundTruthOf(plan.scenarios[task.scenario], task.seed)), aligned);
 	return {{"ate_aligned_rmse", ate.rmse}, {"ate_aligned_mean", ate.mean}, {"ate_aligned_median", ate.median},

@@ -50,7 +50,7 @@ void writeFile(const std::string& file, const std::string& text, bool executable
 }
 
 /** The sbatch options every job of the submission shares. */
-std::string commonOptions(const SlurmSettings& s)
+std::string commonOptions(const TSlurmOptions& s)
 {
 	std::string o;
 	if (!s.partition.empty()) o += " --partition=" + shellWord(s.partition);
@@ -115,7 +115,7 @@ std::string submitArrays(const std::string& name, const std::string& ids, const 
 
 SlurmNeeds slurmNeeds(const BatchPlan& plan, const std::vector<Task::Kind>& kinds)
 {
-	const SlurmSettings& s = plan.slurm;
+	const TSlurmOptions& s = plan.slurm;
 	double peakMiB = 0, wallSeconds = 0;
 	size_t measured = 0;
 	for (const auto& task : plan.tasks)
@@ -177,7 +177,7 @@ SlurmSubmission writeSlurmSubmission(const BatchPlan& plan, const std::string& b
 	SlurmSubmission sub;
 	sub.dir = fs::absolute(dir).lexically_normal().string();
 	fs::create_directories(sub.dir + "/logs");
-	const SlurmSettings& s = plan.slurm;
+	const TSlurmOptions& s = plan.slurm;
 	sub.maxArraySize = s.maxArraySize > 0 ? s.maxArraySize : clusterMaxArraySize();
 	sub.renderings = size_t(std::count_if(plan.tasks.begin(), plan.tasks.end(), [](const Task& t) { return t.kind == Task::Kind::Render; }));
 	sub.runs = plan.tasks.size() - sub.renderings;

@@ -38,7 +38,7 @@ se2::Pose bestAlignment(const std::vector<AssociatedPose>& pairs, bool withScale
 }
 }  // namespace
 
-AteStats computeAte(const Trajectory& estimate, const Trajectory& groundTruth, const AteOptions& o)
+AteStats computeAte(const Trajectory& estimate, const Trajectory& groundTruth, const TAteOptions& o)
 {
 	const std::vector<AssociatedPose> pairs = associate(estimate, groundTruth, o.maxGap);
 	AteStats s;

@@ -33,7 +33,7 @@ struct AteStats
 	double alignmentScale = 1;
 };
 
-struct AteOptions
+struct TAteOptions
 {
 	/** Longest ground-truth gap to interpolate across (s). */
 	double maxGap = 0.5;
@@ -45,5 +45,5 @@ struct AteOptions
 
 AteStats computeAte(
 	const Trajectory& estimate, const Trajectory& groundTruth,
-	const AteOptions& options = {});
+	const TAteOptions& options = {});
 }  // namespace vslam

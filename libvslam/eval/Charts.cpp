@@ -41,7 +41,7 @@ std::string number(double v, double step)
 class Canvas
 {
    public:
-	Canvas(const ChartOptions& o, double x0, double x1, double y0, double y1)
+	Canvas(const TChartOptions& o, double x0, double x1, double y0, double y1)
 		: m_img(o.height, o.width, CV_8UC3, cv::Scalar(255, 255, 255)),
 		  m_area(70, 44, o.width - 90, o.height - 44 - o.bottomMargin),
 		  m_x0(x0), m_x1(x1 > x0 ? x1 : x0 + 1), m_y0(y0), m_y1(y1 > y0 ? y1 : y0 + 1)
@@ -97,7 +97,7 @@ class Canvas
 };
 }  // namespace
 
-void writeLineChart(const std::vector<ChartSeries>& series, const ChartOptions& o, const std::string& pngFile)
+void writeLineChart(const std::vector<ChartSeries>& series, const TChartOptions& o, const std::string& pngFile)
 {
 	constexpr double inf = std::numeric_limits<double>::infinity();
 	double x0 = inf, x1 = -inf, y1 = 0;
@@ -121,7 +121,7 @@ void writeLineChart(const std::vector<ChartSeries>& series, const ChartOptions& 
 	canvas.write(pngFile);
 }
 
-void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 3>& rgb, const ChartOptions& o,
+void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 3>& rgb, const TChartOptions& o,
 	const std::string& pngFile, const std::vector<double>& spreads, const std::vector<std::string>& labels,
 	const std::vector<std::array<uint8_t, 3>>& barColours)
 {
@@ -129,7 +129,7 @@ void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 
 	double top = 0;
 	for (size_t i = 0; i < values.size(); i++)
 		if (std::isfinite(values[i])) top = std::max(top, values[i] + spread(i));
-	ChartOptions withRoom = o;
+	TChartOptions withRoom = o;
 	if (!labels.empty())
 	{
 		const int rows = 14 * int(std::min<size_t>(labels.size(), 4));

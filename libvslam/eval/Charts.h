@@ -26,7 +26,7 @@ struct ChartMarkers
 	std::string label;
 };
 
-struct ChartOptions
+struct TChartOptions
 {
 	std::string title, xLabel, yLabel;
 	std::vector<ChartMarkers> markers;
@@ -35,12 +35,12 @@ struct ChartOptions
 };
 
 /** Line chart; throws InputError if the file cannot be written. */
-void writeLineChart(const std::vector<ChartSeries>& series, const ChartOptions& options, const std::string& pngFile);
+void writeLineChart(const std::vector<ChartSeries>& series, const TChartOptions& options, const std::string& pngFile);
 
 /** Bar chart of \a values at x = 1, 2, ...; with \a spreads, an error bar
  * of +- spread on each; with \a labels, a label under each bar; with
  * \a barColours, each bar's own colour instead of \a rgb. Throws InputError if the file cannot be written. */
-void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 3>& rgb, const ChartOptions& options,
+void writeBarChart(const std::vector<double>& values, const std::array<uint8_t, 3>& rgb, const TChartOptions& options,
 	const std::string& pngFile, const std::vector<double>& spreads = {}, const std::vector<std::string>& labels = {},
 	const std::vector<std::array<uint8_t, 3>>& barColours = {});
 }  // namespace vslam

@@ -7,7 +7,7 @@ namespace vslam
 {
 namespace
 {
-// The error figures' (AteOptions): truth is not invented across longer gaps.
+// The error figures' (TAteOptions): truth is not invented across longer gaps.
 constexpr double kMaxInterpolationGap = 0.5;  // s
 }
 

@@ -6,11 +6,11 @@
 
 namespace vslam
 {
-RpeStats computeRpe(const Trajectory& estimate, const Trajectory& groundTruth, const RpeOptions& o)
+RpeStats computeRpe(const Trajectory& estimate, const Trajectory& groundTruth, const TRpeOptions& o)
 {
 	if (!(o.delta > 0)) throw InputError("the relative-error window must be positive");
 	const std::vector<AssociatedPose> pairs = associate(estimate, groundTruth, o.maxGap);
-	const bool byTime = o.window == RpeOptions::Window::Time;
+	const bool byTime = o.window == TRpeOptions::Window::Time;
 	// The true distance travelled up to each pose, and where each pose lies
 	// along the window's axis (its time, or that distance).
 	std::vector<double> travelledTo(pairs.size(), 0.0), along(pairs.size(), 0.0);

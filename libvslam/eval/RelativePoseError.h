@@ -12,7 +12,7 @@
 
 namespace vslam
 {
-struct RpeOptions
+struct TRpeOptions
 {
 	enum class Window
 	{
@@ -37,5 +37,5 @@ struct RpeStats
 
 /** Throws InputError if a time window is asked for an estimate without
  * timestamps, or delta is not positive. */
-RpeStats computeRpe(const Trajectory& estimate, const Trajectory& groundTruth, const RpeOptions& options = {});
+RpeStats computeRpe(const Trajectory& estimate, const Trajectory& groundTruth, const TRpeOptions& options = {});
 }  // namespace vslam

@@ -28,9 +28,9 @@ Trajectory circleLap(double dt)
 	return tr;
 }
 
-RpeOptions window(RpeOptions::Window w, double delta)
+TRpeOptions window(TRpeOptions::Window w, double delta)
 {
-	RpeOptions o;
+	TRpeOptions o;
 	o.window = w;
 	o.delta = delta;
 	return o;
@@ -61,7 +61,7 @@ TEST(RelativePoseError, IndependentNoiseOfSigmaGivesTwoSigmaOverAnyWindow)
 	const double sigma = 0.05;
 	for (auto& p : noisy)
 		p.pose.x += sigma * rng.drawGaussian1D_normalized(), p.pose.y += sigma * rng.drawGaussian1D_normalized();
-	for (const auto& o : {window(RpeOptions::Window::Time, 1.0), window(RpeOptions::Window::Distance, 2.0)})
+	for (const auto& o : {window(TRpeOptions::Window::Time, 1.0), window(TRpeOptions::Window::Distance, 2.0)})
 		EXPECT_NEAR(computeRpe(noisy, truth, o).translation.rmse, 2 * sigma, 0.03 * 2 * sigma);
 }
 
@@ -73,7 +73,7 @@ TEST(RelativePoseError, ScaleDriftShowsAsItsShareOfTheDistanceWindow)
 	const Trajectory truth = straightLine(0.05, 2000);
 	Trajectory drifting = truth;
 	for (auto& p : drifting) p.pose.x *= 1.03;
-	const RpeStats s = computeRpe(drifting, truth, window(RpeOptions::Window::Distance, 1.0));
+	const RpeStats s = computeRpe(drifting, truth, window(TRpeOptions::Window::Distance, 1.0));
 	EXPECT_NEAR(s.translation.mean, 0.03 * s.meanTravelled, 1e-9);
 	EXPECT_NEAR(s.meanTravelled, 1.0, 0.01);  // the first pose a window away
 	EXPECT_NEAR(s.rotation.max, 0, 1e-12);
@@ -85,7 +85,7 @@ TEST(RelativePoseError, HeadingDriftShowsAsRotationErrorPerTimeWindow)
 	const Trajectory truth = circleLap(0.1);
 	Trajectory turning = truth;
 	for (auto& p : turning) p.pose.phi = se2::wrap(p.pose.phi + 0.01 * p.t);  // 0.01 rad/s
-	const RpeStats s = computeRpe(turning, truth, window(RpeOptions::Window::Time, 2.0));
+	const RpeStats s = computeRpe(turning, truth, window(TRpeOptions::Window::Time, 2.0));
 	EXPECT_NEAR(s.rotation.mean, 0.02, 1e-9);
 	EXPECT_NEAR(s.rotation.max, 0.02, 1e-9);
 }
@@ -126,5 +126,5 @@ TEST(RelativePoseError, WindowsAcrossAGapInTheEstimateAreSkipped)
 	EXPECT_EQ(s.translation.count, 479u);
 	EXPECT_NEAR(s.translation.max, 1.0, 1e-9);
 	EXPECT_NEAR(s.translation.median, 0, 1e-9);
-	EXPECT_THROW(computeRpe(truth, truth, window(RpeOptions::Window::Time, 0)), InputError);
+	EXPECT_THROW(computeRpe(truth, truth, window(TRpeOptions::Window::Time, 0)), InputError);
 }

@@ -24,7 +24,7 @@ ChartSeries errorSeries(const Trajectory& path, const RunFigureSources& src, dou
 {
 	Trajectory moved = path;
 	for (auto& p : moved) p.pose = se2::compose(alignment, p.pose);
-	AteOptions o;
+	TAteOptions o;
 	o.maxGap = src.maxGap;
 	const AteStats s = computeAte(moved, *src.truth, o);
 	ChartSeries series;
@@ -134,7 +134,7 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 	if (src.odometry)
 		errors.push_back(errorSeries(*src.odometry, src, t0, kOdometryRgb, "odometry", {0, 0, 0}));
 	errors.push_back(errorSeries(*src.estimate, src, t0, kEstimateRgb, "estimate", src.alignment));
-	ChartOptions o;
+	TChartOptions o;
 	o.title = "Position error over time";
 	o.xLabel = "time [s]";
 	o.yLabel = "error [m]";
@@ -144,7 +144,7 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 	if (src.runDir.empty()) return written;
 
 	// Fig. 5: measurements per landmark, in the order of creation.
-	ChartOptions bars;
+	TChartOptions bars;
 	bars.title = "Measurements per landmark";
 	bars.xLabel = "landmark (order of creation)";
 	bars.yLabel = "measurements";
@@ -162,7 +162,7 @@ std::vector<std::string> writeRunFigures(const RunFigureSources& src, const std:
 		const std::vector<double> values = steps.column(column, stepFile);
 		for (size_t i = 0; i < values.size(); i++)
 			if (!onlyUpdates || used[i] > 0) s.x.push_back(seconds[i]), s.y.push_back(values[i]);
-		ChartOptions c;
+		TChartOptions c;
 		c.title = title;
 		c.xLabel = "time [s]";
 		c.yLabel = yLabel;

@@ -17,7 +17,9 @@
 
 using namespace vslam;
 
-CVSlamParticleFilter::CVSlamParticleFilter(const TVSlamFilterOptions& o)
+CVSlamParticleFilter::CVSlamParticleFilter() : CVSlamParticleFilter(TOptions()) {}
+
+CVSlamParticleFilter::CVSlamParticleFilter(const TOptions& o)
 	: m_options(o),
 	  m_motion(o.motion),
 	  m_likelihood(o.likelihood),

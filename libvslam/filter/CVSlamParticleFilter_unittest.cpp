@@ -31,9 +31,9 @@ void weightedMoments(const CVSlamParticleFilter& f, Eigen::Vector3d& mean, Eigen
 	}
 }
 
-TVSlamFilterOptions manyParticles(size_t n)
+CVSlamParticleFilter::TOptions manyParticles(size_t n)
 {
-	TVSlamFilterOptions o;
+	CVSlamParticleFilter::TOptions o;
 	o.pf.sampleSize = static_cast<uint32_t>(n);
 	o.kidnap.enabled = false;
 	return o;
@@ -41,9 +41,9 @@ TVSlamFilterOptions manyParticles(size_t n)
 
 /** n particles drawn around the origin with the given spread; the first
  * landmark anchored at the cloud's mean or not. */
-TVSlamFilterOptions spreadCloud(size_t n, double stdXY, double stdPhi, bool anchorFirstLandmark)
+CVSlamParticleFilter::TOptions spreadCloud(size_t n, double stdXY, double stdPhi, bool anchorFirstLandmark)
 {
-	TVSlamFilterOptions o = manyParticles(n);
+	CVSlamParticleFilter::TOptions o = manyParticles(n);
 	o.pf.initial_std_xy = stdXY;
 	o.pf.initial_std_phi = stdPhi;
 	o.landmarks.anchor_first_landmark = anchorFirstLandmark;
@@ -311,7 +311,7 @@ namespace
 /** Drives a 4 m square whose odometry reports 5 deg too little per corner,
  * creates a landmark at each corner and measures the first again when it is
  * back (40 s later): the filter right after that loop closure. */
-std::unique_ptr<CVSlamParticleFilter> filterAfterALoop(const TVSlamFilterOptions& o)
+std::unique_ptr<CVSlamParticleFilter> filterAfterALoop(const CVSlamParticleFilter::TOptions& o)
 {
 	mrpt::random::getRandomGenerator().randomize(3);
 	auto f = std::make_unique<CVSlamParticleFilter>(o);
@@ -333,7 +333,7 @@ std::unique_ptr<CVSlamParticleFilter> filterAfterALoop(const TVSlamFilterOptions
 	return f;
 }
 
-TVSlamFilterOptions squareLoopOptions(bool loopClosure)
+CVSlamParticleFilter::TOptions squareLoopOptions(bool loopClosure)
 {
 	auto o = manyParticles(200);
 	o.loopClosure.enabled = loopClosure;
@@ -441,7 +441,7 @@ namespace
 {
 /** n particles, odometry with a large turn noise, heading changes fused or
  * not; the random generator seeded. */
-TVSlamFilterOptions noisyTurns(size_t n, bool fuseHeadingChanges)
+CVSlamParticleFilter::TOptions noisyTurns(size_t n, bool fuseHeadingChanges)
 {
 	auto o = manyParticles(n);
 	o.motion.sigma_R = 0.1;

@@ -107,7 +107,7 @@ struct NormalEquations
 	std::vector<Eigen::Matrix<double, 6, 3>> B;
 };
 
-NormalEquations normalEquations(const Problem& p, const Options& opt)
+NormalEquations normalEquations(const Problem& p, const TRefineOptions& opt)
 {
 	const int nc = static_cast<int>(p.poses.size()) - 1;
 	const int np = static_cast<int>(p.points.size());
@@ -192,7 +192,7 @@ Problem dampedStep(const Problem& p, const NormalEquations& eq, double lambda)
 }
 }  // namespace
 
-double refine(Problem& p, const Options& opt)
+double refine(Problem& p, const TRefineOptions& opt)
 {
 	const int nc = static_cast<int>(p.poses.size()) - 1;  // free cameras
 	const int np = static_cast<int>(p.points.size());

@@ -55,14 +55,14 @@ struct Problem
 Eigen::Matrix<double, 6, 1> priorResidual(const Problem& problem, const PosePrior& prior);
 Eigen::Matrix<double, 6, 6> priorJacobian(const Problem& problem, const PosePrior& prior);
 
-struct Options
+struct TRefineOptions
 {
 	int iterations = 15;
 	double huberPx = 2.0;
 };
 
 /** Refines poses[1..] and every point; returns the final robust cost. */
-double refine(Problem& problem, const Options& options = {});
+double refine(Problem& problem, const TRefineOptions& options = {});
 
 /** Reprojection residual (pixels) of one observation. */
 Eigen::Vector2d residual(const Problem& problem, const Observation& o);

@@ -31,7 +31,7 @@ class CLandmarkDatabase
 	{
 		static constexpr const char* kSection = "vslam_landmark_database";
 
-		TDescriptorSearch search;  //!< INI keys search_index, search_checks, search_bbf_compared
+		TDescriptorSearchOptions search;  //!< INI keys search_index, search_checks, search_bbf_compared
 		/** The k-d tree votes in a random projection of the descriptors to this
 		 * many dimensions (signed bytes; 128: no projection). Candidates are
 		 * then verified with the stored descriptors. */

@@ -65,7 +65,7 @@ void CVisualFrontEnd::loadMap(const CVSlamMap& map, const mrpt::poses::CPose2D& 
 			inWorld[e.id] = mrpt::poses::CPose2D(e.mean[0], e.mean[1], e.mean[2]);
 			m_nextId = std::max(m_nextId, e.id + 1);  // also for a map without appearances
 		}
-	const TScaleRefinementSettings settings = m_options.scale.settings();
+	const TScaleTrackOptions settings = m_options.scale.settings();
 	std::vector<VisualLandmarkModel> landmarks;
 	for (const auto& record : map.appearances)
 	{

@@ -15,7 +15,7 @@ namespace
 constexpr int kFlannTrees = 1;
 }  // namespace
 
-std::unique_ptr<DescriptorIndex> DescriptorIndex::create(const TDescriptorSearch& search, const DescriptorCodec& codec)
+std::unique_ptr<DescriptorIndex> DescriptorIndex::create(const TDescriptorSearchOptions& search, const DescriptorCodec& codec)
 {
 	if (search.index == "flann") return std::make_unique<FlannDescriptorIndex>(codec, kFlannTrees, search.checks);
 	if (search.index == "bbf") return std::make_unique<BestBinFirstDescriptorIndex>(codec, search.bbf_compared);

@@ -30,7 +30,7 @@ namespace vslam
 class DescriptorCodec;
 
 /** Which index, and how much of it a query searches. */
-struct TDescriptorSearch
+struct TDescriptorSearchOptions
 {
 	/** "flann" (OpenCV FLANN randomized k-d trees, bounded checks: cost per
 	 * query nearly independent of the map size) or "bbf" (k-d trees with leaf
@@ -57,7 +57,7 @@ class DescriptorIndex
 
 	/** The back-end `search.index` names, over codes of `codec` (which
 	 * must outlive the index). */
-	static std::unique_ptr<DescriptorIndex> create(const TDescriptorSearch& search, const DescriptorCodec& codec);
+	static std::unique_ptr<DescriptorIndex> create(const TDescriptorSearchOptions& search, const DescriptorCodec& codec);
 
 	/** Adds a landmark's descriptors (N x 128 SIFT, CV_32F) as N rows. */
 	void add(int64_t owner, const cv::Mat& siftDescriptors);

@@ -75,7 +75,7 @@ class DescriptorIndexScenario : public ::testing::TestWithParam<Scenario>
    protected:
 	std::unique_ptr<DescriptorIndex> make(const DescriptorCodec& codec) const
 	{
-		TDescriptorSearch search;
+		TDescriptorSearchOptions search;
 		search.index = GetParam().index;
 		search.checks = GetParam().checks;
 		search.bbf_compared = GetParam().checks;
@@ -170,7 +170,7 @@ TEST_P(DefaultDescriptorIndex, RecallsTheRightLandmarkAndSkipsRemovedOnes)
 	EXPECT_GT(right, 0.9 * total) << right << " of " << total;
 }
 
-const TDescriptorSearch kDefaults;
+const TDescriptorSearchOptions kDefaults;
 INSTANTIATE_TEST_SUITE_P(BackEnds, ExactDescriptorIndex,
 	::testing::Values(Scenario{"flann", 100000}, Scenario{"bbf", 100000}),
 	[](const auto& info) { return info.param.index; });
@@ -207,7 +207,7 @@ TEST(FlannDescriptorIndex, LevelsStayLogarithmicAndBuildsAreDeterministic)
 
 TEST(DescriptorIndex, UnknownBackEndIsRejected)
 {
-	TDescriptorSearch search;
+	TDescriptorSearchOptions search;
 	search.index = "lsh";
 	const DescriptorCodec codec(DescriptorCodec::Kind::Projected, 16);
 	EXPECT_THROW(DescriptorIndex::create(search, codec), std::invalid_argument);

@@ -306,7 +306,7 @@ double leastTruncatedCostNear(const PlanarEpipolarModel& model, const std::vecto
 }  // namespace
 
 std::optional<HeadingChangeEstimate> vslam::estimateHeadingChange(const ImageFeatures& first,
-	const ImageFeatures& second, const mrpt::poses::CPose3D& mount, double chord, const HeadingChangeSettings& s)
+	const ImageFeatures& second, const mrpt::poses::CPose3D& mount, double chord, const THeadingEstimationOptions& s)
 {
 	const size_t least = static_cast<size_t>(std::max(2, s.minInliers));
 	if (first.size() < least || second.size() < least) return std::nullopt;

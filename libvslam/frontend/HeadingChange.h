@@ -53,7 +53,7 @@
 
 namespace vslam
 {
-struct HeadingChangeSettings
+struct THeadingEstimationOptions
 {
 	double matchRatio = 0.8;  //!< Lowe's ratio test
 	int minInliers = 20;  //!< matches that must fit the model
@@ -143,7 +143,7 @@ class PlanarEpipolarModel
 /** The heading change from `first` to `second`, or nullopt when too few
  * matches fit one (e.g. unrelated images, a blank wall, motion blur). */
 std::optional<HeadingChangeEstimate> estimateHeadingChange(const ImageFeatures& first, const ImageFeatures& second,
-	const mrpt::poses::CPose3D& mount, double chord, const HeadingChangeSettings& settings);
+	const mrpt::poses::CPose3D& mount, double chord, const THeadingEstimationOptions& settings);
 
 /** Measures the heading change between consecutive images of a camera, for
  * the filter to fuse into the odometry ([vslam_heading_change]). */
@@ -176,6 +176,6 @@ class CHeadingChangeEstimator
 
    private:
 	TOptions m_options;
-	HeadingChangeSettings m_settings;
+	THeadingEstimationOptions m_settings;
 };
 }  // namespace vslam

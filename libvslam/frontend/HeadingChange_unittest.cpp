@@ -208,7 +208,7 @@ TEST(HeadingChange, AShakenCameraStillGivesTheHeadingChange)
 		// Camera axes: pitch about x, roll about z (CPose3D: yaw about z, roll about x).
 		const mrpt::poses::CPose3D shake(0, 0, 0, 0.5 * kDeg * N(rng), 0, 0.5 * kDeg * N(rng));
 		const ImagePair p = makePair(mount, arc(d, theta), 0.3, 120, 20, rng, 1, 6, shake);
-		const auto e = estimateHeadingChange(p.first, p.second, mount, d, HeadingChangeSettings());
+		const auto e = estimateHeadingChange(p.first, p.second, mount, d, THeadingEstimationOptions());
 		ASSERT_TRUE(e) << k;
 		const double z = (e->dphi - theta) / e->stdDphi;
 		sumSquaredNormalized += z * z;
@@ -249,7 +249,7 @@ TEST(HeadingChange, RecoversTheHeadingChangeWithNoiseAndOutliers)
 {
 	std::mt19937 rng(7);
 	const auto mount = mountAt(0.1, 0);
-	const HeadingChangeSettings settings;
+	const THeadingEstimationOptions settings;
 	// Straight, gentle arcs, a turn in place and a fast turn while moving.
 	const std::vector<std::pair<double, double>> motions = {
 		{0.06, 0.0}, {0.06, 2 * kDeg}, {0.05, -5 * kDeg}, {0.0, 20 * kDeg}, {0.03, -30 * kDeg}};
@@ -280,7 +280,7 @@ TEST(HeadingChange, ATurnThenAStraightIsNoArcButFitsToo)
 	for (const double theta : {6 * kDeg, -6 * kDeg, 10 * kDeg})
 	{
 		const ImagePair p = makePair(mount, turnThenDrive(0.03, theta), 0.3, 200, 40, rng);
-		const auto e = estimateHeadingChange(p.first, p.second, mount, 0.03, HeadingChangeSettings());
+		const auto e = estimateHeadingChange(p.first, p.second, mount, 0.03, THeadingEstimationOptions());
 		ASSERT_TRUE(e) << theta;
 		EXPECT_NEAR(e->dphi, theta, 4 * e->stdDphi) << theta;
 		// The camera's shake in the model ties the heading to the chord's
@@ -303,7 +303,7 @@ TEST(HeadingChange, PredictedStdMatchesTheScatter)
 		const double alpha = kind == 0 ? theta / 2 : kind == 1 ? theta : 0;
 		const mrpt::poses::CPose2D motion(0.05 * std::cos(alpha), 0.05 * std::sin(alpha), theta);
 		const ImagePair p = makePair(mount, motion, 0.5, 60, 10, rng);
-		const auto e = estimateHeadingChange(p.first, p.second, mount, 0.05, HeadingChangeSettings());
+		const auto e = estimateHeadingChange(p.first, p.second, mount, 0.05, THeadingEstimationOptions());
 		ASSERT_TRUE(e);
 		const double z = (e->dphi - theta) / e->stdDphi;
 		sumSquaredNormalized += z * z;
@@ -328,8 +328,8 @@ TEST(HeadingChange, AWrongDistanceMovesTheEstimateLittle)
 	{
 		const double theta = (k % 5 - 2) * 4 * kDeg;
 		const ImagePair p = makePair(mount, arc(0.06, theta), 0.3, 150, 0, rng);
-		const auto exact = estimateHeadingChange(p.first, p.second, mount, 0.06, HeadingChangeSettings());
-		const auto off = estimateHeadingChange(p.first, p.second, mount, 0.072, HeadingChangeSettings());
+		const auto exact = estimateHeadingChange(p.first, p.second, mount, 0.06, THeadingEstimationOptions());
+		const auto off = estimateHeadingChange(p.first, p.second, mount, 0.072, THeadingEstimationOptions());
 		ASSERT_TRUE(exact && off);
 		worst = std::max(worst, std::abs(off->dphi - exact->dphi));
 	}
@@ -341,7 +341,7 @@ TEST(HeadingChange, ACameraOnTheAxisTurningInPlaceIsARotation)
 	std::mt19937 rng(17);
 	const auto mount = mountAt(0, 0);
 	const ImagePair p = makePair(mount, arc(0, -12 * kDeg), 0.3, 150, 30, rng);
-	const auto e = estimateHeadingChange(p.first, p.second, mount, 0, HeadingChangeSettings());
+	const auto e = estimateHeadingChange(p.first, p.second, mount, 0, THeadingEstimationOptions());
 	ASSERT_TRUE(e);
 	EXPECT_NEAR(e->dphi, -12 * kDeg, 4 * e->stdDphi);
 }
@@ -364,7 +364,7 @@ TEST(HeadingChange, ASlipTheOdometryMissedNearASurfaceGivesNothing)
 	for (int k = 0; k < 20; k++)
 	{
 		const ImagePair p = makePair(mount, slipped, 0.3, 150, 0, rng, 0.32, 0.42);
-		const auto e = estimateHeadingChange(p.first, p.second, mount, 0.0, HeadingChangeSettings());
+		const auto e = estimateHeadingChange(p.first, p.second, mount, 0.0, THeadingEstimationOptions());
 		if (!e) continue;
 		estimates++;
 		if (std::abs(e->dphi - theta) > 4 * e->stdDphi) wrong++;
@@ -372,7 +372,7 @@ TEST(HeadingChange, ASlipTheOdometryMissedNearASurfaceGivesNothing)
 	EXPECT_EQ(wrong, 0) << estimates << " estimates";
 	// Without the slip the same scene is measured.
 	const ImagePair p = makePair(mount, arc(0.0, theta), 0.3, 150, 0, rng, 0.32, 0.42);
-	const auto e = estimateHeadingChange(p.first, p.second, mount, 0.0, HeadingChangeSettings());
+	const auto e = estimateHeadingChange(p.first, p.second, mount, 0.0, THeadingEstimationOptions());
 	ASSERT_TRUE(e);
 	EXPECT_NEAR(e->dphi, theta, 4 * e->stdDphi);
 }
@@ -384,7 +384,7 @@ TEST(HeadingChange, ARobotStandingStillTurnsByNothing)
 	std::mt19937 rng(29);
 	const auto mount = mountAt(0.1, 0);
 	const ImagePair p = makePair(mount, arc(0.0, 0.0), 0.3, 150, 20, rng);
-	const auto e = estimateHeadingChange(p.first, p.second, mount, 0.0, HeadingChangeSettings());
+	const auto e = estimateHeadingChange(p.first, p.second, mount, 0.0, THeadingEstimationOptions());
 	ASSERT_TRUE(e);
 	EXPECT_NEAR(e->dphi, 0.0, std::max(4 * e->stdDphi, 0.01 * kDeg));
 }
@@ -396,11 +396,11 @@ TEST(HeadingChange, UnrelatedImagesOrTooFewFeaturesGiveNothing)
 	const ImagePair a = makePair(mount, arc(0.06, 0), 0.3, 150, 0, rng);
 	const ImagePair b = makePair(mount, arc(0.06, 0), 0.3, 150, 0, rng);
 	// Different scenes: no descriptor passes the ratio test against the other.
-	EXPECT_FALSE(estimateHeadingChange(a.first, b.second, mount, 0.06, HeadingChangeSettings()));
+	EXPECT_FALSE(estimateHeadingChange(a.first, b.second, mount, 0.06, THeadingEstimationOptions()));
 	// Matching descriptors but the positions of another scene: no consensus.
 	ImageFeatures scrambled = b.second;
 	scrambled.descriptors = a.second.descriptors;
-	EXPECT_FALSE(estimateHeadingChange(a.first, scrambled, mount, 0.06, HeadingChangeSettings()));
+	EXPECT_FALSE(estimateHeadingChange(a.first, scrambled, mount, 0.06, THeadingEstimationOptions()));
 	const ImagePair few = makePair(mount, arc(0.06, 0), 0.3, 15, 0, rng);
-	EXPECT_FALSE(estimateHeadingChange(few.first, few.second, mount, 0.06, HeadingChangeSettings()));
+	EXPECT_FALSE(estimateHeadingChange(few.first, few.second, mount, 0.06, THeadingEstimationOptions()));
 }

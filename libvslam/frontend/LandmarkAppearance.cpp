@@ -28,7 +28,7 @@ CVSlamMap::TLandmarkAppearance vslam::appearanceOf(const VisualLandmarkModel& lm
 }
 
 VisualLandmarkModel vslam::landmarkOf(
-	const CVSlamMap::TLandmarkAppearance& a, const TScaleRefinementSettings* scaleSettings)
+	const CVSlamMap::TLandmarkAppearance& a, const TScaleTrackOptions* scaleSettings)
 {
 	VisualLandmarkModel lm;
 	lm.id = a.id;

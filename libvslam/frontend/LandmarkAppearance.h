@@ -17,5 +17,5 @@ CVSlamMap::TLandmarkAppearance appearanceOf(const VisualLandmarkModel& landmark)
  * refinement on), its scale track resumes from the record's estimate.
  * The record must have passed CVSlamMap::validate(). */
 VisualLandmarkModel landmarkOf(
-	const CVSlamMap::TLandmarkAppearance& record, const TScaleRefinementSettings* scaleSettings);
+	const CVSlamMap::TLandmarkAppearance& record, const TScaleTrackOptions* scaleSettings);
 }  // namespace vslam

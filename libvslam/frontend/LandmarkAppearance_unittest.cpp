@@ -54,7 +54,7 @@ TEST(LandmarkAppearance, ALandmarkComesBackAsItWasSaved)
 	const VisualLandmarkModel lm = sampleLandmark(codec);
 	const auto record = appearanceOf(lm);
 	EXPECT_EQ(record.descriptorBytes.size(), 3u * 64);
-	const TScaleRefinementSettings settings;
+	const TScaleTrackOptions settings;
 	const VisualLandmarkModel back = landmarkOf(record, &settings);
 	EXPECT_EQ(back.id, lm.id);
 	EXPECT_EQ(back.points, lm.points);

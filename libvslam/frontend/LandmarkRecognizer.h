@@ -75,7 +75,7 @@ class CLandmarkRecognizer
 		 * kept one, carried to now by the odometry, when that one is at most
 		 * `horizon` old (OdometryConsistency.h; INI key odometry_gate_s, 0: no
 		 * test). The tolerances are OdometryConsistency's. */
-		TOdometryConsistency odometry_gate;
+		TOdometryConsistencyOptions odometry_gate;
 
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;

@@ -14,7 +14,7 @@ namespace
 constexpr double kGate99 = 9.21;
 }  // namespace
 
-CLandmarkScaleTrack::CLandmarkScaleTrack(double creationBaseline, const TScaleRefinementSettings& settings)
+CLandmarkScaleTrack::CLandmarkScaleTrack(double creationBaseline, const TScaleTrackOptions& settings)
 	: m_settings(settings)
 {
 	if (!(creationBaseline > 0) || !(settings.odometrySigma > 0))
@@ -25,7 +25,7 @@ CLandmarkScaleTrack::CLandmarkScaleTrack(double creationBaseline, const TScaleRe
 	m_weightedSum = m_fixedWeightedSum;
 }
 
-CLandmarkScaleTrack CLandmarkScaleTrack::resumed(const TState& state, const TScaleRefinementSettings& settings)
+CLandmarkScaleTrack CLandmarkScaleTrack::resumed(const TState& state, const TScaleTrackOptions& settings)
 {
 	const bool positive = state.information > 0 && state.weightedSum > 0 && std::isfinite(state.information) &&
 		std::isfinite(state.weightedSum);
@@ -158,9 +158,9 @@ void CLandmarkScaleTrack::TOptions::takeOdometryNoiseFrom(double motionModelSigm
 	if (odometry_sigma == 0) odometry_sigma = motionModelSigmaT;
 }
 
-TScaleRefinementSettings CLandmarkScaleTrack::TOptions::settings() const
+TScaleTrackOptions CLandmarkScaleTrack::TOptions::settings() const
 {
-	TScaleRefinementSettings s;
+	TScaleTrackOptions s;
 	s.odometrySigma = odometry_sigma > 0 ? odometry_sigma : CMotionModel::TOptions().sigma_T;
 	return s;
 }

@@ -55,7 +55,7 @@
 
 namespace vslam
 {
-struct TScaleRefinementSettings
+struct TScaleTrackOptions
 {
 	double odometrySigma = 0.05;  //!< m / sqrt(m) travelled
 	double pairMinTravel = 0.3;  //!< m
@@ -100,7 +100,7 @@ class CLandmarkScaleTrack
 		void takeOdometryNoiseFrom(double motionModelSigmaT);
 		/** The track's settings; an odometry_sigma still 0 (options not read
 		 * from an INI) is the motion model's default. */
-		TScaleRefinementSettings settings() const;
+		TScaleTrackOptions settings() const;
 
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;
@@ -109,7 +109,7 @@ class CLandmarkScaleTrack
 	CLandmarkScaleTrack() = default;
 	/** Starts the track of a landmark built over `creationBaseline` metres
 	 * of odometry. */
-	CLandmarkScaleTrack(double creationBaseline, const TScaleRefinementSettings& settings);
+	CLandmarkScaleTrack(double creationBaseline, const TScaleTrackOptions& settings);
 
 	/** Adds a sighting. Returns the factor by which the landmark's lengths
 	 * (its points, and the translation of this sighting's measurement)
@@ -137,7 +137,7 @@ class CLandmarkScaleTrack
 	 * prior, and pairs start with its next sighting (a new run's odometry
 	 * does not continue the old one's). Throws std::invalid_argument if the
 	 * state is not positive and finite. */
-	static CLandmarkScaleTrack resumed(const TState& state, const TScaleRefinementSettings& settings);
+	static CLandmarkScaleTrack resumed(const TState& state, const TScaleTrackOptions& settings);
 
 	/** Heap memory held (the pairs kept for judging). */
 	size_t bytes() const { return m_pairs.capacity() * sizeof(Pair); }
@@ -172,7 +172,7 @@ class CLandmarkScaleTrack
 	 * The pairs' variances take k as it was before. */
 	void estimate();
 
-	TScaleRefinementSettings m_settings;
+	TScaleTrackOptions m_settings;
 	/** The previous sighting, positions in the units as built. */
 	std::optional<ScaleSighting> m_anchor;
 	/** The prior k = 1 and the pairs folded into it. */

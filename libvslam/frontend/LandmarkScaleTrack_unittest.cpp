@@ -41,7 +41,7 @@ DriveResult drive(const DriveSettings& d, unsigned seed)
 {
 	std::mt19937 rng(seed);
 	std::normal_distribution<double> unit(0, 1);
-	TScaleRefinementSettings settings;
+	TScaleTrackOptions settings;
 	settings.odometrySigma = d.odometrySigma;
 	DriveResult r{CLandmarkScaleTrack(0.3, settings)};
 	const CPose2D landmarkInWorld(1.0, 2.0, 0.7);
@@ -252,7 +252,7 @@ TEST(CLandmarkScaleTrack, SightingsTooFarApartFormNoPair)
 
 TEST(CLandmarkScaleTrack, RejectsANonPositiveBaseline)
 {
-	EXPECT_THROW(CLandmarkScaleTrack(0.0, TScaleRefinementSettings{}), std::invalid_argument);
+	EXPECT_THROW(CLandmarkScaleTrack(0.0, TScaleTrackOptions{}), std::invalid_argument);
 }
 
 TEST(CLandmarkScaleTrack, AResumedTrackKeepsItsEstimateAndLearnsOn)
@@ -260,7 +260,7 @@ TEST(CLandmarkScaleTrack, AResumedTrackKeepsItsEstimateAndLearnsOn)
 	DriveSettings d;
 	d.sightings = 20;
 	const auto first = drive(d, 3);
-	TScaleRefinementSettings settings;
+	TScaleTrackOptions settings;
 	settings.odometrySigma = d.odometrySigma;
 	auto resumed = CLandmarkScaleTrack::resumed(first.track.state(), settings);
 	EXPECT_DOUBLE_EQ(resumed.scaleError(), first.track.scaleError());

@@ -14,7 +14,7 @@ mrpt::poses::CPose2D predictFromEarlier(const ReportedRecognition& earlier, cons
 
 bool agreesWithOdometry(const std::optional<ReportedRecognition>& earlier, double time,
 	const mrpt::poses::CPose2D& odometryNow, const mrpt::poses::CPose2D& landmarkInRobot,
-	const TOdometryConsistency& tolerance)
+	const TOdometryConsistencyOptions& tolerance)
 {
 	if (tolerance.horizon <= 0 || !earlier) return true;
 	const double age = time - earlier->time;

@@ -27,7 +27,7 @@ struct ReportedRecognition
 	mrpt::math::TPose2D landmarkInRobot;
 };
 
-struct TOdometryConsistency
+struct TOdometryConsistencyOptions
 {
 	double horizon = 0;  //!< s: an earlier recognition older than this is not used (0: no check)
 	double position = 0.3;  //!< m: position tolerance ...
@@ -46,5 +46,5 @@ mrpt::poses::CPose2D predictFromEarlier(
  * one older than the horizon or later than `time`, or the check off: true. */
 bool agreesWithOdometry(const std::optional<ReportedRecognition>& earlier, double time,
 	const mrpt::poses::CPose2D& odometryNow, const mrpt::poses::CPose2D& landmarkInRobot,
-	const TOdometryConsistency& tolerance);
+	const TOdometryConsistencyOptions& tolerance);
 }  // namespace vslam

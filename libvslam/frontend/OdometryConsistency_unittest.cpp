@@ -19,9 +19,9 @@ ReportedRecognition earlierAt(double time)
 	return {time, TPose2D(1, 2, 90 * kDeg), TPose2D(3, 1, 30 * kDeg)};
 }
 
-TOdometryConsistency fiveSeconds()
+TOdometryConsistencyOptions fiveSeconds()
 {
-	TOdometryConsistency t;
+	TOdometryConsistencyOptions t;
 	t.horizon = 5;
 	return t;
 }
@@ -71,5 +71,5 @@ TEST(OdometryConsistency, WithoutARecentEarlierRecognitionEverythingAgrees)
 	EXPECT_TRUE(agreesWithOdometry(earlierAt(10), 15.1, now, wrong, fiveSeconds()));  // older than the horizon
 	EXPECT_TRUE(agreesWithOdometry(earlierAt(10), 9, now, wrong, fiveSeconds()));  // later than this image
 	EXPECT_TRUE(agreesWithOdometry(std::nullopt, 12, now, wrong, fiveSeconds()));
-	EXPECT_TRUE(agreesWithOdometry(earlierAt(10), 12, now, wrong, TOdometryConsistency()));  // off
+	EXPECT_TRUE(agreesWithOdometry(earlierAt(10), 12, now, wrong, TOdometryConsistencyOptions()));  // off
 }

@@ -14,7 +14,7 @@
 using namespace vslam;
 using mrpt::serialization::CSerializable;
 
-CRawlogReader::CRawlogReader(const std::string& fileName, std::optional<TIsolatedReadLimits> isolation)
+CRawlogReader::CRawlogReader(const std::string& fileName, std::optional<TIsolatedReadOptions> isolation)
 	: m_fileName(fileName)
 {
 	m_stream = std::make_unique<CCheckedGzInputStream>(fileName);

@@ -52,7 +52,7 @@ class CRawlogReader
 	 * hang or exhaust MRPT's deserializers there is an InputError naming it
 	 * when reading gets to it, instead of a crash of this process. */
 	explicit CRawlogReader(
-		const std::string& fileName, std::optional<TIsolatedReadLimits> isolation = TIsolatedReadLimits());
+		const std::string& fileName, std::optional<TIsolatedReadOptions> isolation = TIsolatedReadOptions());
 	~CRawlogReader();
 
 	/** The next step, or false at the end of the file. */

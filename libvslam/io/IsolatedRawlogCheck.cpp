@@ -90,7 +90,7 @@ struct ChildReport
 	std::string killedBecause;
 };
 
-ChildReport watchChild(pid_t child, int fd, const TIsolatedReadLimits& limits)
+ChildReport watchChild(pid_t child, int fd, const TIsolatedReadOptions& limits)
 {
 	using Clock = std::chrono::steady_clock;
 	ChildReport report;
@@ -140,7 +140,7 @@ ChildReport watchChild(pid_t child, int fd, const TIsolatedReadLimits& limits)
 }
 }  // namespace
 
-std::optional<UnreadableEntry> findUnreadableEntry(const std::string& rawlogFile, const TIsolatedReadLimits& limits)
+std::optional<UnreadableEntry> findUnreadableEntry(const std::string& rawlogFile, const TIsolatedReadOptions& limits)
 {
 	int fds[2];
 	if (::pipe2(fds, O_CLOEXEC) != 0)

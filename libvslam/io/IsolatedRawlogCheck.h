@@ -16,7 +16,7 @@
 namespace vslam
 {
 /** What reading one entry may cost before the check calls it corrupt. */
-struct TIsolatedReadLimits
+struct TIsolatedReadOptions
 {
 	/** Wall time without progress to the next entry. */
 	double maxSecondsPerEntry = 60.0;
@@ -37,5 +37,5 @@ struct UnreadableEntry
  * ordinary input error (which the caller's own reading then reports).
  * Throws InputError only if the child process cannot be started. */
 std::optional<UnreadableEntry> findUnreadableEntry(
-	const std::string& rawlogFile, const TIsolatedReadLimits& limits = {});
+	const std::string& rawlogFile, const TIsolatedReadOptions& limits = {});
 }  // namespace vslam

@@ -37,7 +37,7 @@ void writeRawlog(const std::string& file, int n, int badPair = -1, uint32_t part
 
 /** Reads the whole file as the apps do; returns the error, or "" and the
  * number of steps read. */
-std::string readToTheEnd(const std::string& file, const TIsolatedReadLimits& limits, size_t* steps = nullptr)
+std::string readToTheEnd(const std::string& file, const TIsolatedReadOptions& limits, size_t* steps = nullptr)
 {
 	try
 	{
@@ -113,7 +113,7 @@ TEST(IsolatedRawlogCheck, ACorruptCountInsideAnObjectIsStoppedByTheMemoryLimit)
 	// Two billion particles: MRPT would allocate and draw them for minutes.
 	TempDir dir;
 	writeRawlog(dir.file("huge.rawlog"), 6, 3, 2'000'000'000u);
-	TIsolatedReadLimits limits;
+	TIsolatedReadOptions limits;
 	limits.maxBytesPerEntry = uint64_t(256) << 20;
 	const auto bad = findUnreadableEntry(dir.file("huge.rawlog"), limits);
 	ASSERT_TRUE(bad.has_value());
@@ -128,7 +128,7 @@ TEST(IsolatedRawlogCheck, AnEntryThatDoesNotEndIsStoppedByTheTimeLimit)
 {
 	TempDir dir;
 	writeRawlog(dir.file("slow.rawlog"), 6, 2, 2'000'000'000u);
-	TIsolatedReadLimits limits;
+	TIsolatedReadOptions limits;
 	limits.maxSecondsPerEntry = 0.5;
 	limits.maxBytesPerEntry = uint64_t(64) << 30;
 	const auto bad = findUnreadableEntry(dir.file("slow.rawlog"), limits);

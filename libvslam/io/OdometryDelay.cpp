@@ -46,7 +46,7 @@ struct SightingPair
 	double t1, t2, bearingChange, parallaxFactor;  //!< parallaxFactor: sin(b) / r at the midpoint
 };
 
-std::vector<SightingPair> pairsOf(std::vector<BearingSighting> sightings, const OdometryDelayOptions& o)
+std::vector<SightingPair> pairsOf(std::vector<BearingSighting> sightings, const TOdometryDelayOptions& o)
 {
 	std::sort(sightings.begin(), sightings.end(), [](const BearingSighting& a, const BearingSighting& b) {
 		return a.landmark != b.landmark ? a.landmark < b.landmark : a.t < b.t;
@@ -85,7 +85,7 @@ double truncatedCost(const CumulativeMotion& motion, const std::vector<SightingP
 }  // namespace
 
 std::optional<double> vslam::estimateOdometryDelay(const std::vector<std::vector<double>>& odometryRows,
-	std::vector<BearingSighting> sightings, const OdometryDelayOptions& o)
+	std::vector<BearingSighting> sightings, const TOdometryDelayOptions& o)
 {
 	if (odometryRows.size() < 2) return std::nullopt;
 	const CumulativeMotion motion(odometryRows);

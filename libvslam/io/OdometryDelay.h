@@ -21,7 +21,7 @@
 
 namespace vslam
 {
-struct OdometryDelayOptions
+struct TOdometryDelayOptions
 {
 	double minDelay = -0.5, maxDelay = 1.0, step = 0.01;  //!< the grid, s
 	double maxPairInterval = 0.5;  //!< s between the two sightings of a pair
@@ -43,5 +43,5 @@ struct BearingSighting
  * sightings in any order. nullopt when too few pairs of sightings fall
  * inside the odometry's span. */
 std::optional<double> estimateOdometryDelay(const std::vector<std::vector<double>>& odometryRows,
-	std::vector<BearingSighting> sightings, const OdometryDelayOptions& o = {});
+	std::vector<BearingSighting> sightings, const TOdometryDelayOptions& o = {});
 }  // namespace vslam

@@ -9,7 +9,7 @@
 #include <cmath>
 
 using namespace vslam;
-using Opt = TMeasurementSimOptions;
+using Opt = CMeasurementSimulator::TOptions;
 
 namespace
 {
@@ -226,7 +226,7 @@ SimulatedRun CMeasurementSimulator::run() const
 		const size_t n = o.waypoints.size() / 2;
 		return Eigen::Vector2d(o.waypoints[2 * (i % n)], o.waypoints[2 * (i % n) + 1]);
 	};
-	DriveLimits limits;
+	TDriveOptions limits;
 	limits.speed = o.speed, limits.maxTurnRate = o.max_turn_rate, limits.dt = o.dt;
 	GoalDriver driver(limits, [&](const se2::Pose&) {
 		return o.path_type == Opt::PathType::Waypoints ? waypoint(++nextWaypoint) : randomGoal(o, rng);

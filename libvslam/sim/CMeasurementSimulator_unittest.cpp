@@ -8,9 +8,9 @@ using namespace vslam;
 
 namespace
 {
-TMeasurementSimOptions quiet()
+CMeasurementSimulator::TOptions quiet()
 {
-	TMeasurementSimOptions o;
+	CMeasurementSimulator::TOptions o;
 	o.duration = 200;
 	o.bad_measurement_probability = 0;
 	o.landmark_frame_std_xy = 0;
@@ -95,7 +95,7 @@ TEST(CMeasurementSimulator, OdometryNoiseMatchesTheModel)
 TEST(CMeasurementSimulator, RangeBearingRespectsFieldOfViewAndRange)
 {
 	auto o = quiet();
-	o.landmark_type = TMeasurementSimOptions::LandmarkType::RangeBearing;
+	o.landmark_type = CMeasurementSimulator::TOptions::LandmarkType::RangeBearing;
 	const auto run = CMeasurementSimulator(o).run();
 	EXPECT_GT(run.rangeBearingMeasurements, 100u);
 	for (const auto& st : run.steps)

@@ -28,9 +28,9 @@ namespace
 {
 constexpr double kDeg = M_PI / 180;
 
-Eigen::Vector2d startPoint(const TVisualSimOptions& o)
+Eigen::Vector2d startPoint(const CVisualSimulator::TOptions& o)
 {
-	return o.path_type == TVisualSimOptions::PathType::Waypoints ? Eigen::Vector2d(o.waypoints[0], o.waypoints[1])
+	return o.path_type == CVisualSimulator::TOptions::PathType::Waypoints ? Eigen::Vector2d(o.waypoints[0], o.waypoints[1])
 																 : Eigen::Vector2d(o.start_pose[0], o.start_pose[1]);
 }
 
@@ -41,7 +41,7 @@ std::string describe(const Eigen::Vector2d& p)
 	return buf;
 }
 
-mrpt::obs::CObservation2DRangeScan::Ptr laserScan(const TVisualSimOptions& o, const std::vector<world::Segment>& segs,
+mrpt::obs::CObservation2DRangeScan::Ptr laserScan(const CVisualSimulator::TOptions& o, const std::vector<world::Segment>& segs,
 	const std::vector<world::Circle>& people, const se2::Pose& robot, mrpt::random::CRandomGenerator& rng,
 	mrpt::Clock::time_point t)
 {
@@ -74,7 +74,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr laserScan(const TVisualSimOptions& o, co
 class CameraFrames
 {
    public:
-	CameraFrames(const TVisualSimOptions& o, const std::string& imagesDir)
+	CameraFrames(const CVisualSimulator::TOptions& o, const std::string& imagesDir)
 		: m_o(o), m_dir(imagesDir), m_renderer(o.camera), m_imaging(o.imaging, o.camera.fx(), o.seed),
 		  m_mount(o.cameraPoseOnRobot()), m_rng(o.seed * 40503u + 7)
 	{
@@ -116,7 +116,7 @@ class CameraFrames
 	}
 
    private:
-	const TVisualSimOptions& m_o;
+	const CVisualSimulator::TOptions& m_o;
 	std::string m_dir;
 	CameraRenderer m_renderer;
 	CameraImaging m_imaging;
@@ -139,10 +139,10 @@ std::vector<world::Circle> placePeople(const SimulationEvents& events, world::Wo
 }
 }  // namespace
 
-CVisualSimulator::CVisualSimulator(const TVisualSimOptions& options, const world::FloorPlan& plan)
+CVisualSimulator::CVisualSimulator(const CVisualSimulator::TOptions& options, const world::FloorPlan& plan)
 	: m_options(options), m_plan(plan), m_free(m_plan, options.robot_radius, startPoint(options))
 {
-	const TVisualSimOptions& o = m_options;
+	const CVisualSimulator::TOptions& o = m_options;
 	const FreeSpace& fs = m_free;
 	const auto blocked = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::string& what) {
 		if (const world::Segment* s = fs.blockingSegment(a, b))
@@ -152,7 +152,7 @@ CVisualSimulator::CVisualSimulator(const TVisualSimOptions& options, const world
 				" of world file '" + m_plan.sourceFile + "'");
 		if (!fs.isFree(b)) throw InputError(what + " ends at " + describe(b) + ", which is not free space");
 	};
-	if (o.path_type == TVisualSimOptions::PathType::Waypoints)
+	if (o.path_type == CVisualSimulator::TOptions::PathType::Waypoints)
 	{
 		const size_t n = o.waypoints.size() / 2;
 		for (size_t i = 0; i < n; i++)
@@ -181,7 +181,7 @@ mrpt::poses::CPose3D cameraShake(double pitchRad, double rollRad)
 
 VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::function<void(double)>& progress) const
 {
-	const TVisualSimOptions& o = m_options;
+	const CVisualSimulator::TOptions& o = m_options;
 	std::filesystem::create_directories(imagesDir);
 	mrpt::random::CRandomGenerator rng(o.seed);  // robot, odometry, laser, kidnaps
 	const SimulationEvents events(o, &m_free);
@@ -190,7 +190,7 @@ VisualSimRun CVisualSimulator::run(const std::string& imagesDir, const std::func
 	const std::vector<world::Segment> segments = m_plan.obstacleSegments();
 	RobotRoute route(o, m_free, rng);
 
-	DriveLimits limits;
+	TDriveOptions limits;
 	limits.speed = o.speed, limits.maxTurnRate = o.max_turn_rate, limits.dt = o.dt;
 	limits.turnInPlaceAbove = 0.15;  // drive nearly straight legs: they were checked for collisions
 	limits.goalTolerance = 0.05;

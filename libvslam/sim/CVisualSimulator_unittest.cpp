@@ -25,9 +25,9 @@ namespace
 {
 const std::string kWorlds = std::string(VSLAM_SOURCE_DIR) + "/config_ini/worlds/";
 
-TVisualSimOptions shortRun(double duration)
+CVisualSimulator::TOptions shortRun(double duration)
 {
-	TVisualSimOptions o;
+	CVisualSimulator::TOptions o;
 	o.world_file = kWorlds + "living_room.world";
 	o.texture_max_side = 512;  // enough for these checks, light on memory
 	o.duration = duration;
@@ -35,7 +35,7 @@ TVisualSimOptions shortRun(double duration)
 	return o;
 }
 
-world::FloorPlan livingRoom(const TVisualSimOptions& o) { return world::loadFloorPlan(o.world_file, o.texture_dir); }
+world::FloorPlan livingRoom(const CVisualSimulator::TOptions& o) { return world::loadFloorPlan(o.world_file, o.texture_dir); }
 
 std::string fileBytes(const fs::path& p)
 {
@@ -51,7 +51,7 @@ const mrpt::obs::CActionRobotMovement2D* odometryOf(const ActionFramePair& e)
 
 TEST(CVisualSimulator, SameSeedSameRawlogAndImages)
 {
-	const TVisualSimOptions o = shortRun(8);
+	const CVisualSimulator::TOptions o = shortRun(8);
 	const auto plan = livingRoom(o);
 	vslam::testing::TempDir a, b;
 	const auto runA = CVisualSimulator(o, plan).run(a.path().string());
@@ -69,7 +69,7 @@ TEST(CVisualSimulator, SameSeedSameRawlogAndImages)
 	EXPECT_EQ(images, runA.images);
 	EXPECT_EQ(runA.images, 20u);  // 8 s at 2.5 Hz
 
-	TVisualSimOptions other = o;
+	CVisualSimulator::TOptions other = o;
 	other.seed = 2;
 	vslam::testing::TempDir c;
 	const auto runC = CVisualSimulator(other, plan).run(c.path().string());
@@ -78,7 +78,7 @@ TEST(CVisualSimulator, SameSeedSameRawlogAndImages)
 
 TEST(CVisualSimulator, LaserRangesEndOnTheFloorPlanAndImagesCarryTheCalibration)
 {
-	TVisualSimOptions o = shortRun(30);
+	CVisualSimulator::TOptions o = shortRun(30);
 	o.camera_mount = {0.12, -0.02, 0.4, 3, -8, 1};
 	const auto plan = livingRoom(o);
 	vslam::testing::TempDir dir;
@@ -131,7 +131,7 @@ TEST(CVisualSimulator, LaserRangesEndOnTheFloorPlanAndImagesCarryTheCalibration)
 TEST(CVisualSimulator, OdometryErrorsHaveTheConfiguredStatistics)
 {
 	// The odometry the rawlog reports against the true motion, per step.
-	TVisualSimOptions o = shortRun(1500);
+	CVisualSimulator::TOptions o = shortRun(1500);
 	o.camera_rate = 0.01;  // one image in 100 s: this is about odometry
 	o.odometry.sigma_T = 0.05, o.odometry.sigma_R = 0.05, o.odometry.sigma_R_per_meter = 0.02;
 	o.odometry.scale_bias = 0.03, o.odometry.turn_bias = -0.04;
@@ -169,7 +169,7 @@ TEST(CVisualSimulator, OdometryErrorsHaveTheConfiguredStatistics)
 
 TEST(CVisualSimulator, KidnapMovesTheRobotUnseenAndEventsShowInTheImages)
 {
-	TVisualSimOptions o = shortRun(20);
+	CVisualSimulator::TOptions o = shortRun(20);
 	o.kidnap_times = {10};
 	o.kidnap_min_distance = 2.5;
 	o.blackouts = {2, 4};
@@ -200,8 +200,8 @@ TEST(CVisualSimulator, KidnapMovesTheRobotUnseenAndEventsShowInTheImages)
 
 TEST(CVisualSimulator, PathsThroughWallsAreErrorsNamingTheWorldFileLine)
 {
-	TVisualSimOptions o = shortRun(10);
-	o.path_type = TVisualSimOptions::PathType::Waypoints;
+	CVisualSimulator::TOptions o = shortRun(10);
+	o.path_type = CVisualSimulator::TOptions::PathType::Waypoints;
 	o.waypoints = {2.0, 1.2, 2.0, 2.9, 5.0, 2.9};  // the coffee table at (3.6, 1.9)
 	const auto plan = livingRoom(o);
 	try
@@ -217,7 +217,7 @@ TEST(CVisualSimulator, PathsThroughWallsAreErrorsNamingTheWorldFileLine)
 	}
 	o.waypoints = {2.0, 1.2, 12.0, 1.2};  // out through the east wall
 	EXPECT_THROW(CVisualSimulator(o, plan), InputError);
-	o.path_type = TVisualSimOptions::PathType::Random;
+	o.path_type = CVisualSimulator::TOptions::PathType::Random;
 	o.start_pose = {3.6, 1.9, 0};  // inside the coffee table
 	EXPECT_THROW(CVisualSimulator(o, plan), InputError);
 	o.start_pose = {2.0, 1.0, 0};
@@ -227,7 +227,7 @@ TEST(CVisualSimulator, PathsThroughWallsAreErrorsNamingTheWorldFileLine)
 
 TEST(CVisualSimulator, TheFloorShakesTheCameraInPitchAndRollNeverInHeading)
 {
-	TVisualSimOptions o;
+	CVisualSimulator::TOptions o;
 	o.camera_mount = {0.1, 0, 0.85, 0, -5, 0};
 	const mrpt::poses::CPose3D mount = o.cameraPoseOnRobot();
 	// The optical axis (camera z) and the image's right (camera x) in robot coordinates.

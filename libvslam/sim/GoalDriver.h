@@ -11,7 +11,7 @@
 
 namespace vslam
 {
-struct DriveLimits
+struct TDriveOptions
 {
 	double speed = 0.15;  //!< m/s
 	double maxTurnRate = 0.5;  //!< rad/s
@@ -26,7 +26,7 @@ class GoalDriver
 	/** Called on arrival at the current goal, with the current pose. */
 	using NextGoal = std::function<Eigen::Vector2d(const se2::Pose&)>;
 
-	GoalDriver(const DriveLimits& limits, NextGoal nextGoal) : m_limits(limits), m_nextGoal(std::move(nextGoal)) {}
+	GoalDriver(const TDriveOptions& limits, NextGoal nextGoal) : m_limits(limits), m_nextGoal(std::move(nextGoal)) {}
 
 	void setGoal(const Eigen::Vector2d& goal) { m_goal = goal; }
 	const Eigen::Vector2d& goal() const { return m_goal; }
@@ -44,7 +44,7 @@ class GoalDriver
 	}
 
    private:
-	DriveLimits m_limits;
+	TDriveOptions m_limits;
 	NextGoal m_nextGoal;
 	Eigen::Vector2d m_goal{0, 0};
 };

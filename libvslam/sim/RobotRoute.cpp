@@ -8,7 +8,7 @@ namespace vslam
 {
 namespace
 {
-using Path = TVisualSimOptions::PathType;
+using Path = CVisualSimulator::TOptions::PathType;
 
 std::string describe(const Eigen::Vector2d& p)
 {
@@ -18,7 +18,7 @@ std::string describe(const Eigen::Vector2d& p)
 }
 }  // namespace
 
-RobotRoute::RobotRoute(const TVisualSimOptions& o, const world::FreeSpace& freeSpace, mrpt::random::CRandomGenerator& rng)
+RobotRoute::RobotRoute(const CVisualSimulator::TOptions& o, const world::FreeSpace& freeSpace, mrpt::random::CRandomGenerator& rng)
 	: m_o(o), m_free(freeSpace), m_rng(rng), m_planner(freeSpace)
 {
 	m_start = {o.start_pose[0], o.start_pose[1], o.start_pose[2] * M_PI / 180};
@@ -85,7 +85,7 @@ se2::Pose RobotRoute::kidnap(const se2::Pose& from, Eigen::Vector2d& goal)
 	// A pose the robot had, far enough from here; if it has been nowhere
 	// far enough yet, anywhere.
 	std::vector<const Visit*> far;
-	if (m_o.kidnap_target == TVisualSimOptions::KidnapTarget::Visited)
+	if (m_o.kidnap_target == CVisualSimulator::TOptions::KidnapTarget::Visited)
 		for (const Visit& v : m_visits)
 			if (std::hypot(v.pose.x - from.x, v.pose.y - from.y) >= m_o.kidnap_min_distance) far.push_back(&v);
 	se2::Pose to = from;

@@ -7,7 +7,7 @@
  * place its map knows) or any free pose.
  */
 #include <libvslam/models/SE2.h>
-#include <libvslam/sim/TVisualSimOptions.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/world/FreeSpace.h>
 #include <libvslam/world/PathPlanner.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -20,7 +20,7 @@ namespace vslam
 class RobotRoute
 {
    public:
-	RobotRoute(const TVisualSimOptions& o, const world::FreeSpace& freeSpace, mrpt::random::CRandomGenerator& rng);
+	RobotRoute(const CVisualSimulator::TOptions& o, const world::FreeSpace& freeSpace, mrpt::random::CRandomGenerator& rng);
 
 	/** Where the robot starts and the first goal. */
 	se2::Pose start() const { return m_start; }
@@ -39,7 +39,7 @@ class RobotRoute
 	se2::Pose kidnap(const se2::Pose& from, Eigen::Vector2d& goal);
 
    private:
-	const TVisualSimOptions& m_o;
+	const CVisualSimulator::TOptions& m_o;
 	const world::FreeSpace& m_free;
 	mrpt::random::CRandomGenerator& m_rng;
 	world::PathPlanner m_planner;

@@ -6,7 +6,7 @@
 
 namespace vslam
 {
-SimulatedWorld loadSimulatedWorld(TVisualSimOptions& o)
+SimulatedWorld loadSimulatedWorld(CVisualSimulator::TOptions& o)
 {
 	SimulatedWorld w;
 	if (o.world_seed == 0)

@@ -4,7 +4,7 @@
  * generator makes from world_seed (whose start becomes the robot's, unless
  * the path is a waypoint loop).
  */
-#include <libvslam/sim/TVisualSimOptions.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/world/FloorPlan.h>
 
 #include <string>
@@ -20,5 +20,5 @@ struct SimulatedWorld
 
 /** Loads or generates the world; for a generated home, sets the options'
  * start_pose to its start. InputError naming the file and line. */
-SimulatedWorld loadSimulatedWorld(TVisualSimOptions& options);
+SimulatedWorld loadSimulatedWorld(CVisualSimulator::TOptions& options);
 }  // namespace vslam

@@ -3,7 +3,7 @@
 
 namespace vslam
 {
-SimulationEvents::SimulationEvents(const TVisualSimOptions& o, const world::FreeSpace* freeSpace) : m_o(o)
+SimulationEvents::SimulationEvents(const CVisualSimulator::TOptions& o, const world::FreeSpace* freeSpace) : m_o(o)
 {
 	for (size_t i = 0; i + 5 < o.people.size(); i += 6)
 		m_walks.push_back({o.people[i], {o.people[i + 1], o.people[i + 2]}, {o.people[i + 3], o.people[i + 4]}, o.people[i + 5]});

@@ -5,7 +5,7 @@
  * people walking through are (the walks the INI lists, and random walks
  * between free places of the home, drawn from the seed).
  */
-#include <libvslam/sim/TVisualSimOptions.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/world/FreeSpace.h>
 
 #include <Eigen/Core>
@@ -26,7 +26,7 @@ class SimulationEvents
 {
    public:
 	/** freeSpace: where random walks may go (nullptr: none are drawn). */
-	SimulationEvents(const TVisualSimOptions& o, const world::FreeSpace* freeSpace);
+	SimulationEvents(const CVisualSimulator::TOptions& o, const world::FreeSpace* freeSpace);
 
 	/** Lighting relative to normal at time t (s from the start). */
 	double lightingGain(double t) const;
@@ -40,7 +40,7 @@ class SimulationEvents
 	std::optional<Eigen::Vector2d> person(size_t i, double t) const;
 
    private:
-	const TVisualSimOptions& m_o;
+	const CVisualSimulator::TOptions& m_o;
 	std::vector<PersonWalk> m_walks;
 
 	static bool inside(const std::vector<double>& intervals, double t);

@@ -49,7 +49,7 @@ MatchStats summarize(const std::vector<std::pair<size_t, size_t>>& results)
 
 ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, const Trajectory& truth,
 	const CFeatureExtractor::TOptions& features, const CImageCalibration::TOptions& camera,
-	const ImageSequenceStatsOptions& o)
+	const TImageSequenceStatsOptions& o)
 {
 	const CFeatureExtractor extractor(features);
 	std::vector<Frame> frames;

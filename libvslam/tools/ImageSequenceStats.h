@@ -14,7 +14,7 @@
 
 namespace vslam
 {
-struct ImageSequenceStatsOptions
+struct TImageSequenceStatsOptions
 {
 	double pairSeconds = 1;  //!< each image against the first one this much later
 	double revisitMinSeconds = 30;
@@ -42,5 +42,5 @@ struct ImageSequenceStats
  * path (for the revisits). Throws InputError naming the file or entry. */
 ImageSequenceStats computeImageSequenceStats(const std::string& rawlogFile, const Trajectory& truth,
 	const CFeatureExtractor::TOptions& features, const CImageCalibration::TOptions& camera,
-	const ImageSequenceStatsOptions& options = {});
+	const TImageSequenceStatsOptions& options = {});
 }  // namespace vslam

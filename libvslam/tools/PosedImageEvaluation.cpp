@@ -107,7 +107,7 @@ std::vector<ImageFeatures> featuresOfViews(
  * distribution for the whole evaluation: the distribution keeps a drawn
  * value between calls). */
 std::vector<CreationView> creationViews(const std::vector<ImageFeatures>& features, const std::vector<se2::Pose>& robot,
-	int first, int k, const mrpt::poses::CPose3D& mount, const PosedImageEvaluationOptions& o, std::mt19937& rng,
+	int first, int k, const mrpt::poses::CPose3D& mount, const TPosedImageEvaluationOptions& o, std::mt19937& rng,
 	std::normal_distribution<double>& gauss)
 {
 	std::vector<CreationView> creation(k);
@@ -143,7 +143,7 @@ void recordCreationAccuracy(const StrechaView& a, const StrechaView& b, const Cr
 
 PosedImageEvaluation vslam::evaluatePosedImages(
 	const std::vector<StrechaView>& views, const CVisualFrontEnd::TOptions& fe,
-	const PosedImageEvaluationOptions& o)
+	const TPosedImageEvaluationOptions& o)
 {
 	PosedImageEvaluation out;
 	const int n = static_cast<int>(views.size());

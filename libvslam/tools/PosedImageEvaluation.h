@@ -24,7 +24,7 @@
 
 namespace vslam
 {
-struct PosedImageEvaluationOptions
+struct TPosedImageEvaluationOptions
 {
 	uint32_t seed = 1;
 	/** Odometry-like noise on each increment between creation views:
@@ -61,7 +61,7 @@ se2::Pose robotPoseOfCamera(const StrechaView& view);
 
 PosedImageEvaluation evaluatePosedImages(
 	const std::vector<StrechaView>& views, const CVisualFrontEnd::TOptions& frontEnd,
-	const PosedImageEvaluationOptions& options);
+	const TPosedImageEvaluationOptions& options);
 
 /** Markdown tables: accuracy (medians), recognition share by viewpoint change. */
 std::string formatPosedImageEvaluation(const std::string& title, const PosedImageEvaluation& e);

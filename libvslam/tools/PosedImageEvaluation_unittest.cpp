@@ -59,7 +59,7 @@ TEST(PosedImages, FountainP11)
 	EXPECT_LE(s.medianHeadingDeg, 0.5);  // goal; measured 0.08
 	EXPECT_LE(s.medianTranslationPercent, 3.0);  // measured 1.5 (2% odometry noise sets the scale)
 	// Without odometry noise the geometry alone is far below 1%.
-	PosedImageEvaluationOptions exact;
+	TPosedImageEvaluationOptions exact;
 	exact.odometryTranslationNoise = exact.odometryHeadingNoiseDeg = 0;
 	EXPECT_LE(summarize(evaluatePosedImages(views, outdoorOptions(), exact)).medianTranslationPercent, 0.5);
 }

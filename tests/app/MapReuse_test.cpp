@@ -72,10 +72,10 @@ class MapReuse : public ::testing::Test
 	static void SetUpTestSuite()
 	{
 		dir = std::make_unique<TempDir>();
-		vslam::testing::RoomRawlogOptions first;
+		vslam::testing::TRoomRawlogOptions first;
 		first.odometryTurnScale = 1.05;
 		vslam::testing::writeRoomImageRawlog(dir->file("first.rawlog"), first);
-		vslam::testing::RoomRawlogOptions second = first;
+		vslam::testing::TRoomRawlogOptions second = first;
 		second.laps = 1;
 		second.radius = 0.8;
 		second.startAngle = 2.0;
@@ -150,7 +150,7 @@ TEST_F(MapReuse, AMapBuiltWithAnotherCalibrationStillLocalizes)
 	// The landmarks' points are metric, so a 400x300 camera (another focal
 	// length in pixels) recognizes what a 320x240 one mapped.
 	ASSERT_EQ(mapping.exitCode, 0) << mapping.output;
-	vslam::testing::RoomRawlogOptions other;
+	vslam::testing::TRoomRawlogOptions other;
 	other.odometryTurnScale = 1.05;
 	other.laps = 1;
 	other.radius = 0.8;

@@ -51,7 +51,7 @@ std::string writeIni(const TempDir& dir, const std::string& rawlog, bool startFr
 std::string writeExternalImageRawlog(const TempDir& dir)
 {
 	const std::string rawlog = dir.file("ext.rawlog");
-	vslam::testing::RoomRawlogOptions o;
+	vslam::testing::TRoomRawlogOptions o;
 	o.laps = 0.3;
 	o.externalImages = true;
 	vslam::testing::writeRoomImageRawlog(rawlog, o);
@@ -69,7 +69,7 @@ TEST(VisualPipeline, ImagesInOneRunBeatDeadReckoning)
 {
 	TempDir dir;
 	const std::string rawlog = dir.file("room.rawlog");
-	vslam::testing::RoomRawlogOptions o;
+	vslam::testing::TRoomRawlogOptions o;
 	// A 5% turn bias: the heading drifts (a distance bias would scale the
 	// landmarks as well, which no monocular camera can tell).
 	o.odometryTurnScale = 1.05;
@@ -184,7 +184,7 @@ std::string writeOracleTestRawlog(TempDir& dir)
 {
 	vslam::registerObservationClasses();
 	const std::string rawlog = dir.file("room.rawlog");
-	vslam::testing::RoomRawlogOptions o;
+	vslam::testing::TRoomRawlogOptions o;
 	o.laps = 1.5;
 	vslam::testing::writeRoomImageRawlog(rawlog, o);
 	return rawlog;

@@ -95,7 +95,7 @@ TEST(VslamApp, DemoRunWritesEveryOutputAndBeatsDeadReckoning)
 	const AteStats smoothedAte = computeAte(smoothed, readTrajectory(kDemoTruth));
 	EXPECT_EQ(smoothedAte.associated, smoothed.size());
 	EXPECT_NEAR(summaryRmse(dir.file("out/run_summary.yaml"), "most_likely_path"), smoothedAte.rmse, 1e-3);
-	AteOptions aligned;
+	TAteOptions aligned;
 	aligned.align = true;
 	const double smoothedAligned = computeAte(smoothed, readTrajectory(kDemoTruth), aligned).rmse;
 	EXPECT_NEAR(summaryRmse(dir.file("out/run_summary.yaml"), "most_likely_path_se2_aligned"), smoothedAligned, 1e-3);

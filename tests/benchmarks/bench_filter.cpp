@@ -24,7 +24,7 @@ void Update(benchmark::State& state, CMixtureProposal::Nominal nominal)
 	const auto particles = static_cast<uint32_t>(state.range(0));
 	const auto landmarks = static_cast<size_t>(state.range(1));
 	mrpt::random::getRandomGenerator().randomize(1);
-	TVSlamFilterOptions o;
+	CVSlamParticleFilter::TOptions o;
 	o.pf.sampleSize = particles;
 	o.mixture.nominal_proposal = nominal;
 	CVSlamParticleFilter filter(o);

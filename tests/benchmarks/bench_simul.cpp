@@ -6,7 +6,7 @@
 #include <benchmark/benchmark.h>
 #include <libvslam/sim/CameraImaging.h>
 #include <libvslam/sim/CameraRenderer.h>
-#include <libvslam/sim/TVisualSimOptions.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <libvslam/world/LaserRayCaster.h>
 #include <libvslam/world/WorldScene.h>
@@ -28,14 +28,14 @@ void BM_RenderFrame(benchmark::State& state)
 {
 	const int width = static_cast<int>(state.range(0)), height = width * 3 / 4;
 	const bool distorted = state.range(1) != 0;
-	world::WorldScene scene(apartment(), 0, TVisualSimOptions().texture_max_side);
+	world::WorldScene scene(apartment(), 0, CVisualSimulator::TOptions().texture_max_side);
 	mrpt::img::TCamera cam;
 	cam.ncols = width, cam.nrows = height;
 	cam.setIntrinsicParamsFromValues(0.78 * width, 0.78 * width, width / 2.0 - 0.5, height / 2.0 - 0.5);
 	cam.dist.fill(0);
 	if (distorted) cam.dist[0] = -0.2, cam.dist[1] = 0.05;
 	CameraRenderer renderer(cam);
-	const mrpt::poses::CPose3D mount = TVisualSimOptions().cameraPoseOnRobot();
+	const mrpt::poses::CPose3D mount = CVisualSimulator::TOptions().cameraPoseOnRobot();
 	CameraImaging imaging(TCameraImagingOptions(), cam.fx(), 1);
 	FrameConditions frame;
 	frame.turnRate = 0.3;

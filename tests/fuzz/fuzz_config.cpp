@@ -5,7 +5,7 @@
 #include <libvslam/app/CVSlamApp.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/Overrides.h>
-#include <libvslam/sim/TMeasurementSimOptions.h>
+#include <libvslam/sim/CMeasurementSimulator.h>
 #include <tests/fuzz/FuzzInput.h>
 
 #include <sstream>

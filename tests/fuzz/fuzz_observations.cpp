@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
 	// One filter step with it: the pre-filter and the measurement models
 	// must take any field values (NaN, inf, huge IDs) without harm.
-	vslam::TVSlamFilterOptions options;
+	vslam::CVSlamParticleFilter::TOptions options;
 	options.pf.sampleSize = 10;
 	vslam::CVSlamParticleFilter filter(options);
 	mrpt::bayes::CParticleFilter pf;

@@ -21,11 +21,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	vslam::fuzz::writeBytes(file, data, size);
 	try
 	{
-		vslam::TIsolatedReadLimits limits;
+		vslam::TIsolatedReadOptions limits;
 		limits.maxSecondsPerEntry = 4;
 		limits.maxBytesPerEntry = uint64_t(1) << 30;
 		vslam::CRawlogReader reader(file, limits);
-		vslam::TVSlamFilterOptions options;
+		vslam::CVSlamParticleFilter::TOptions options;
 		options.pf.sampleSize = 10;
 		vslam::CVSlamParticleFilter filter(options);
 		mrpt::bayes::CParticleFilter pf;

@@ -19,12 +19,12 @@ struct KidnapOutcome
 	size_t kidnapsDetected = 0;
 };
 
-KidnapOutcome runKidnapSeeds(const TVSlamFilterOptions& opts, const char* label)
+KidnapOutcome runKidnapSeeds(const CVSlamParticleFilter::TOptions& opts, const char* label)
 {
 	KidnapOutcome out;
 	for (uint32_t seed = 1; seed <= 20; seed++)
 	{
-		TMeasurementSimOptions o;
+		CMeasurementSimulator::TOptions o;
 		o.seed = seed;
 		o.mapping_duration = 400;
 		o.duration = 90;
@@ -54,14 +54,14 @@ KidnapOutcome runKidnapSeeds(const TVSlamFilterOptions& opts, const char* label)
 
 TEST(Kidnap, DualParticlesRecoverInAtLeast19Of20Seeds)
 {
-	const KidnapOutcome o = runKidnapSeeds(TVSlamFilterOptions(), "with duals");
+	const KidnapOutcome o = runKidnapSeeds(CVSlamParticleFilter::TOptions(), "with duals");
 	EXPECT_GE(o.recovered, 19);
 	EXPECT_GE(o.kidnapsDetected, 19u);
 }
 
 TEST(Kidnap, WithoutDualParticlesTheFilterStaysLost)
 {
-	TVSlamFilterOptions opts;
+	CVSlamParticleFilter::TOptions opts;
 	opts.mixture.dual_ratio = 0;
 	opts.mixture.dual_ratio_max = 0;
 	opts.kidnap.enabled = false;
@@ -83,7 +83,7 @@ TEST(Kidnap, FromAnUnknownStartTheRobotFindsItselfInAtLeast19Of20Seeds)
 	int found = 0, wrongLockOns = 0;
 	for (uint32_t seed = 1; seed <= 20; seed++)
 	{
-		TMeasurementSimOptions o;
+		CMeasurementSimulator::TOptions o;
 		o.seed = seed;
 		o.mapping_duration = 400;
 		o.duration = 60;
@@ -91,7 +91,7 @@ TEST(Kidnap, FromAnUnknownStartTheRobotFindsItselfInAtLeast19Of20Seeds)
 		const SimulatedRun run = CMeasurementSimulator(o).run();
 		const auto map = vslam::testing::noisyPriorMap(run, 1000 + seed, 0.03, M_PI / 180);
 		const auto r =
-			vslam::testing::runScenario(run, TVSlamFilterOptions(), seed, map, vslam::testing::StartPose::Unknown);
+			vslam::testing::runScenario(run, CVSlamParticleFilter::TOptions(), seed, map, vslam::testing::StartPose::Unknown);
 		const auto first = std::find(r.mappedLandmarkMeasured.begin(), r.mappedLandmarkMeasured.end(), 1);
 		const auto known = std::find(r.poseKnown.begin(), r.poseKnown.end(), 1);
 		if (first == r.mappedLandmarkMeasured.end() || known == r.poseKnown.end())

@@ -38,7 +38,7 @@ RobotRun runRobot(const std::filesystem::path& dir, int robot)
 	std::stringstream text;
 	text << in.rdbuf();
 	const mrpt::config::CConfigFileMemory ini(text.str());
-	TVSlamFilterOptions opts;
+	CVSlamParticleFilter::TOptions opts;
 	opts.loadFromConfig(ini);
 	EXPECT_EQ(opts.pf.sampleSize, 1000u);
 

@@ -8,17 +8,17 @@ using vslam::testing::runScenario;
 
 TEST(RangeBearingSlam, ErrorFarBelowDeadReckoning)
 {
-	TVSlamFilterOptions opts;
+	CVSlamParticleFilter::TOptions opts;
 	double sumFilter = 0, sumOdometry = 0;
 	const int seeds = 5;
 	for (uint32_t seed = 1; seed <= seeds; seed++)
 	{
-		TMeasurementSimOptions o;
+		CMeasurementSimulator::TOptions o;
 		o.seed = seed;
 		o.duration = 600;
 		o.odo_scale_bias = 0.02;
 		o.odo_turn_bias = 0.03;
-		o.landmark_type = TMeasurementSimOptions::LandmarkType::RangeBearing;
+		o.landmark_type = CMeasurementSimulator::TOptions::LandmarkType::RangeBearing;
 		const SimulatedRun run = CMeasurementSimulator(o).run();
 		ASSERT_GT(run.rangeBearingMeasurements, 1000u);
 		const auto r = runScenario(run, opts, seed);

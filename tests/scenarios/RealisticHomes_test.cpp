@@ -29,7 +29,7 @@ TEST(RealisticHomes, FeaturesPerFrameAreThoseOfARealHome)
 	for (const char* home : {"1", "2", "3"})
 	{
 		SCOPED_TRACE(std::string("home ") + home);
-		TVisualSimOptions o = loadVisualSimOptions(config::readIniFile(ini),
+		CVisualSimulator::TOptions o = loadVisualSimOptions(config::readIniFile(ini),
 			{config::parseOverride(std::string("vslam_simul.world_seed=") + home), config::parseOverride("vslam_simul.duration=60"),
 				config::parseOverride("vslam_simul.laps=0"), config::parseOverride("vslam_simul.path_type=roam")},
 			std::filesystem::path(ini).parent_path().string());

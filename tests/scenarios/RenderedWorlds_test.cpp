@@ -6,7 +6,7 @@
 #include <libvslam/frontend/ImageFeatures.h>
 #include <libvslam/sim/CameraImaging.h>
 #include <libvslam/sim/CameraRenderer.h>
-#include <libvslam/sim/TVisualSimOptions.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <libvslam/world/FloorPlanFile.h>
 #include <libvslam/world/FreeSpace.h>
 #include <libvslam/world/WorldScene.h>
@@ -72,7 +72,7 @@ cv::Mat exposed(const cv::Mat& rendered)
 void expectTextureOnEveryFace(const std::string& worldFile, const Eigen::Vector2d& start)
 {
 	const auto plan = world::loadFloorPlan(std::string(VSLAM_SOURCE_DIR) + "/config_ini/worlds/" + worldFile, "/usr/share");
-	world::WorldScene scene(plan, 0, TVisualSimOptions().texture_max_side);
+	world::WorldScene scene(plan, 0, CVisualSimulator::TOptions().texture_max_side);
 	mrpt::img::TCamera cam;
 	cam.ncols = 320, cam.nrows = 240;
 	cam.setIntrinsicParamsFromValues(250, 250, 159.5, 119.5);

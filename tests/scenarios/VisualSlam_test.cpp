@@ -11,9 +11,9 @@ using vslam::testing::runScenario;
 
 namespace
 {
-TMeasurementSimOptions tenMinutesOfBiasedOdometry(uint32_t seed)
+CMeasurementSimulator::TOptions tenMinutesOfBiasedOdometry(uint32_t seed)
 {
-	TMeasurementSimOptions o;
+	CMeasurementSimulator::TOptions o;
 	o.seed = seed;
 	o.duration = 600;
 	o.odo_scale_bias = 0.02;  // wheel radius 2% off
@@ -24,7 +24,7 @@ TMeasurementSimOptions tenMinutesOfBiasedOdometry(uint32_t seed)
 
 TEST(VisualSlam, ErrorFarBelowDeadReckoning)
 {
-	const TVSlamFilterOptions paper;  // defaults: the paper's values
+	const CVSlamParticleFilter::TOptions paper;  // defaults: the paper's values
 	double sumFilter = 0, sumOdometry = 0;
 	const int seeds = 5;
 	for (uint32_t seed = 1; seed <= seeds; seed++)
@@ -56,7 +56,7 @@ TEST(VisualSlam, KnownMapLocalizationIsCentimetreAccurate)
 	const SimulatedRun run = CMeasurementSimulator(o).run();
 	const auto map = vslam::testing::noisyPriorMap(run, 1003, 0.03, 1.0 * M_PI / 180);
 	ASSERT_GT(map.size(), 20u);
-	const auto r = runScenario(run, TVSlamFilterOptions(), 3, map);
+	const auto r = runScenario(run, CVSlamParticleFilter::TOptions(), 3, map);
 	std::printf("known map: ATE RMSE filter %.3f m, dead reckoning %.3f m\n", r.filterRmse(),
 		r.odometryRmse());
 	EXPECT_LT(r.filterRmse(), 0.10);

@@ -18,7 +18,7 @@
 
 namespace vslam::testing
 {
-struct RoomRawlogOptions
+struct TRoomRawlogOptions
 {
 	double laps = 1.5;
 	double odometryScale = 1.0;  //!< odometry distances times this
@@ -34,7 +34,7 @@ struct RoomRawlogOptions
 };
 
 /** Writes `rawlog` and `<rawlog stem>_groundtruth.tum`; returns the image count. */
-inline int writeRoomImageRawlog(const std::string& rawlog, const RoomRawlogOptions& o = {})
+inline int writeRoomImageRawlog(const std::string& rawlog, const TRoomRawlogOptions& o = {})
 {
 	RoomRenderer room(5.0, 4.0, 2.5, 42);
 	mrpt::img::TCamera cam;

@@ -69,7 +69,7 @@ enum class StartPose
 };
 
 inline ScenarioResult runScenario(
-	const SimulatedRun& run, TVSlamFilterOptions opts, uint32_t seed = 1,
+	const SimulatedRun& run, CVSlamParticleFilter::TOptions opts, uint32_t seed = 1,
 	const PriorMap& priorMap = {}, StartPose start = StartPose::True)
 {
 	mrpt::random::getRandomGenerator().randomize(seed);

@@ -1,10 +1,10 @@
-#include <libvslam/app/TVSlamAppOptions.h>
+#include <libvslam/app/CVSlamApp.h>
 #include <libvslam/config/StrictRead.h>
 
 using namespace vslam;
 using namespace vslam::config;
 
-void TVSlamAppOptions::loadFromConfigFile(
+void CVSlamApp::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	rawlog_file = readString(c, s, "rawlog_file", rawlog_file);
@@ -24,7 +24,7 @@ void TVSlamAppOptions::loadFromConfigFile(
 	show_progress = readBool(c, s, "show_progress", show_progress);
 }
 
-void TVSlamAppOptions::saveToConfigFile(
+void CVSlamApp::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	c.write(s, "rawlog_file", rawlog_file, 25, 12,

@@ -1,7 +1,7 @@
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
-#include <libvslam/sim/TVisualSimOptions.h>
+#include <libvslam/sim/CVisualSimulator.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
@@ -40,7 +40,7 @@ void checkIntervals(const std::string& s, const std::string& key, const std::vec
 }
 }  // namespace
 
-TVisualSimOptions::TVisualSimOptions()
+CVisualSimulator::TOptions::TOptions()
 {
 	camera.ncols = 320;
 	camera.nrows = 240;
@@ -48,7 +48,7 @@ TVisualSimOptions::TVisualSimOptions()
 	camera.dist.fill(0);
 }
 
-mrpt::poses::CPose3D TVisualSimOptions::cameraPoseOnRobot() const
+mrpt::poses::CPose3D CVisualSimulator::TOptions::cameraPoseOnRobot() const
 {
 	const double d = M_PI / 180;
 	// The mount's yaw/pitch/roll turn a forward-looking camera; the fixed
@@ -59,12 +59,12 @@ mrpt::poses::CPose3D TVisualSimOptions::cameraPoseOnRobot() const
 		mrpt::poses::CPose3D(0, 0, 0, -M_PI / 2, 0, -M_PI / 2);
 }
 
-size_t TVisualSimOptions::stepsPerFrame() const
+size_t CVisualSimulator::TOptions::stepsPerFrame() const
 {
 	return std::max<size_t>(1, static_cast<size_t>(std::lround(1.0 / (camera_rate * dt))));
 }
 
-void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+void CVisualSimulator::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	seed = static_cast<uint32_t>(readInt(c, s, "seed", seed, Range::closed(0, 4294967295.0)));
 	world_file = readString(c, s, "world_file", world_file);
@@ -109,7 +109,7 @@ void TVisualSimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 	loadEvents(c, s);
 }
 
-void TVisualSimOptions::loadCamera(const mrpt::config::CConfigFileBase& c, const std::string& s)
+void CVisualSimulator::TOptions::loadCamera(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	camera_rate = readDouble(c, s, "camera_rate", camera_rate, {0, 100, false, true});
 	const double stepsPerFrame = 1.0 / (camera_rate * dt);
@@ -147,7 +147,7 @@ void TVisualSimOptions::loadCamera(const mrpt::config::CConfigFileBase& c, const
 	jpeg_quality = static_cast<int>(readInt(c, s, "jpeg_quality", jpeg_quality, Range::closed(1, 100)));
 }
 
-void TVisualSimOptions::loadEvents(const mrpt::config::CConfigFileBase& c, const std::string& s)
+void CVisualSimulator::TOptions::loadEvents(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	kidnap_times = readNumberList(c, s, "kidnap_times", kidnap_times);
 	checkTimes(s, "kidnap_times", kidnap_times, 1, duration);
@@ -171,7 +171,7 @@ void TVisualSimOptions::loadEvents(const mrpt::config::CConfigFileBase& c, const
 	random_people = static_cast<int>(readInt(c, s, "random_people", random_people, Range::closed(0, 1000)));
 }
 
-void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+void CVisualSimulator::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	const auto w = [&](const std::string& key, const auto& value, const std::string& comment) {
 		c.write(s, key, value, 30, 10, comment);
@@ -240,15 +240,15 @@ void TVisualSimOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 	w("random_people", random_people, "People walking between random free places at random times");
 }
 
-TVisualSimOptions loadVisualSimOptions(
+CVisualSimulator::TOptions loadVisualSimOptions(
 	const std::string& iniText, const std::vector<config::Override>& overrides, const std::string& iniDirectory)
 {
 	const mrpt::config::CConfigFileMemory cfg = config::parseIniWithOverrides(iniText, overrides);
-	TVisualSimOptions options;
+	CVisualSimulator::TOptions options;
 	config::KnownKeys known;
-	known.addFromOptions(options, TVisualSimOptions::kSection);
-	config::checkNoUnknownKeys(cfg, known, TVisualSimOptions::kSection);
-	options.loadFromConfigFile(cfg, TVisualSimOptions::kSection);
+	known.addFromOptions(options, CVisualSimulator::TOptions::kSection);
+	config::checkNoUnknownKeys(cfg, known, CVisualSimulator::TOptions::kSection);
+	options.loadFromConfigFile(cfg, CVisualSimulator::TOptions::kSection);
 	if (!options.world_file.empty() && std::filesystem::path(options.world_file).is_relative() && !iniDirectory.empty())
 		options.world_file = (std::filesystem::path(iniDirectory) / options.world_file).string();
 	return options;

@@ -1,7 +1,7 @@
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/StrictRead.h>
-#include <libvslam/sim/TMeasurementSimOptions.h>
+#include <libvslam/sim/CMeasurementSimulator.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -11,7 +11,7 @@ using namespace vslam;
 using namespace vslam::config;
 
 
-void TMeasurementSimOptions::loadFromConfigFile(
+void CMeasurementSimulator::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	seed = static_cast<uint32_t>(readInt(c, s, "seed", seed, Range::closed(0, 4294967295.0)));
@@ -80,7 +80,7 @@ void TMeasurementSimOptions::loadFromConfigFile(
 	kidnap_min_distance = readDouble(c, s, "kidnap_min_distance", kidnap_min_distance, Range::nonNegative());
 }
 
-void TMeasurementSimOptions::saveToConfigFile(
+void CMeasurementSimulator::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	const auto deg = [](double r) { return r * 180 / M_PI; };
@@ -128,14 +128,14 @@ void TMeasurementSimOptions::saveToConfigFile(
 	c.write(s, "kidnap_min_distance", kidnap_min_distance, 30, 10, "Kidnap displacement at least [m]");
 }
 
-vslam::TMeasurementSimOptions vslam::loadMeasurementSimOptions(
+vslam::CMeasurementSimulator::TOptions vslam::loadMeasurementSimOptions(
 	const std::string& iniText, const std::vector<config::Override>& overrides)
 {
 	const mrpt::config::CConfigFileMemory cfg = config::parseIniWithOverrides(iniText, overrides);
-	TMeasurementSimOptions options;
+	CMeasurementSimulator::TOptions options;
 	config::KnownKeys known;
-	known.addFromOptions(options, TMeasurementSimOptions::kSection);
-	config::checkNoUnknownKeys(cfg, known, TMeasurementSimOptions::kSection);
-	options.loadFromConfigFile(cfg, TMeasurementSimOptions::kSection);
+	known.addFromOptions(options, CMeasurementSimulator::TOptions::kSection);
+	config::checkNoUnknownKeys(cfg, known, CMeasurementSimulator::TOptions::kSection);
+	options.loadFromConfigFile(cfg, CMeasurementSimulator::TOptions::kSection);
 	return options;
 }

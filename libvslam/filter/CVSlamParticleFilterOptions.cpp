@@ -1,5 +1,5 @@
 #include <libvslam/config/StrictRead.h>
-#include <libvslam/filter/TVSlamFilterOptions.h>
+#include <libvslam/filter/CVSlamParticleFilter.h>
 
 using namespace vslam;
 using namespace vslam::config;
@@ -11,7 +11,7 @@ const std::vector<std::string> kResamplingNames = {
 	"prMultinomial", "prResidual", "prStratified", "prSystematic"};
 }  // namespace
 
-CParticleFilter::TParticleFilterOptions TParticleFilterOptions::toMrpt() const
+CParticleFilter::TParticleFilterOptions CVSlamParticleFilter::TParticleFilterOptions::toMrpt() const
 {
 	CParticleFilter::TParticleFilterOptions o;
 	o.PF_algorithm = CParticleFilter::pfStandardProposal;
@@ -22,7 +22,7 @@ CParticleFilter::TParticleFilterOptions TParticleFilterOptions::toMrpt() const
 	return o;
 }
 
-void TParticleFilterOptions::loadFromConfigFile(
+void CVSlamParticleFilter::TParticleFilterOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	sampleSize = static_cast<uint32_t>(
@@ -41,7 +41,7 @@ void TParticleFilterOptions::loadFromConfigFile(
 		c, s, "initial_std_phi_deg", initial_std_phi, Range::closed(0, 360));
 }
 
-void TParticleFilterOptions::saveToConfigFile(
+void CVSlamParticleFilter::TParticleFilterOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	c.write(s, "sampleSize", static_cast<int>(sampleSize), 25, 12,
@@ -59,7 +59,7 @@ void TParticleFilterOptions::saveToConfigFile(
 		"Initial heading spread [deg]");
 }
 
-void TLandmarkOptions::loadFromConfigFile(
+void CVSlamParticleFilter::TLandmarkOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	init_std_xy = readDouble(c, s, "init_std_xy", init_std_xy, Range::closed(0, 100));
@@ -68,7 +68,7 @@ void TLandmarkOptions::loadFromConfigFile(
 	anchor_first_landmark = readBool(c, s, "anchor_first_landmark", anchor_first_landmark);
 }
 
-void TLandmarkOptions::saveToConfigFile(
+void CVSlamParticleFilter::TLandmarkOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	c.write(s, "init_std_xy", init_std_xy, 25, 12,
@@ -79,7 +79,7 @@ void TLandmarkOptions::saveToConfigFile(
 		"Collapse the particle cloud onto its mean when the first landmark is created (fixes the map frame)");
 }
 
-void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
+void CVSlamParticleFilter::TOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 {
 	pf.loadFromConfigFile(c, kParticleFilter);
 	motion.loadFromConfigFile(c, kMotionModel);
@@ -95,7 +95,7 @@ void TVSlamFilterOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c)
 	smoothedPose.loadFromConfigFile(c, kSmoothedPose);
 }
 
-void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
+void CVSlamParticleFilter::TOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
 {
 	pf.saveToConfigFile(c, kParticleFilter);
 	motion.saveToConfigFile(c, kMotionModel);
@@ -111,7 +111,7 @@ void TVSlamFilterOptions::saveToConfig(mrpt::config::CConfigFileBase& c) const
 	smoothedPose.saveToConfigFile(c, kSmoothedPose);
 }
 
-void TVSlamFilterOptions::registerKnownKeys(config::KnownKeys& k) const
+void CVSlamParticleFilter::TOptions::registerKnownKeys(config::KnownKeys& k) const
 {
 	k.addFromOptions(pf, kParticleFilter);
 	k.addFromOptions(motion, kMotionModel);
