@@ -7,20 +7,20 @@
  * recognized the image joins the views for a new landmark, which is built
  * once enough views with enough baseline (from odometry) are at hand and
  * announced as a CObservationLandmarkCreated. The map is bounded by a cap
- * and by pruning landmarks that are expected but repeatedly not seen. With
- * heading_change, each image is also matched with the same camera's
- * previous one for the robot's heading change in between
+ * and by pruning landmarks that are expected but repeatedly not seen.
+ * Optionally ([vslam_heading_measurement]), each image is also matched with
+ * the same camera's previous one for the robot's heading change in between
  * (CObservationHeadingChange, HeadingChange.h).
  * Each component owns its options and INI section; TOptions composes them
  * and is the one place where they share a value (the features' ratio test).
  */
-#include <libvslam/frontend/CLandmarkDatabase.h>
-#include <libvslam/frontend/HeadingChange.h>
-#include <libvslam/frontend/LandmarkCreator.h>
-#include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/config/KeyValidation.h>
 #include <libvslam/config/Overrides.h>
+#include <libvslam/frontend/CLandmarkDatabase.h>
+#include <libvslam/frontend/HeadingChange.h>
 #include <libvslam/frontend/ImageFeatures.h>
+#include <libvslam/frontend/LandmarkCreator.h>
+#include <libvslam/frontend/LandmarkRecognizer.h>
 #include <libvslam/frontend/LandmarkScaleTrack.h>
 #include <libvslam/frontend/PinholeCamera.h>
 #include <libvslam/obs/CObservationHeadingChange.h>

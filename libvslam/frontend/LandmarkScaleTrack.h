@@ -28,7 +28,8 @@
  * for d_i) would take every landmark for smaller than it is, by about 1.7%
  * for pairs 0.3 m long; d_i is the unbiased estimate of the true squared
  * displacement (an errors-in-variables correction; it relies on sigma_T
- * being the odometry's true noise, which scale_odometry_sigma can state).
+ * being the odometry's true noise, which [vslam_scale_refinement]
+ * odometry_sigma can state).
  *
  * Pairs are chained (each sighting is the next pair's start) so their
  * odometry noise is independent; a pair is formed once the robot has

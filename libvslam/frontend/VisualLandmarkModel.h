@@ -36,7 +36,7 @@ struct VisualLandmarkModel
 	double lastSeen = 0;  //!< s
 	/** Its last reported recognition (recognition_odometry_gate_s). */
 	std::optional<ReportedRecognition> lastReported;
-	/** Its scale, refined from later sightings (scale_refinement). */
+	/** Its scale, refined from later sightings ([vslam_scale_refinement]). */
 	CLandmarkScaleTrack scale;
 
 	/** Bytes this landmark takes in memory (points, their depth stds, descriptors, fields,
