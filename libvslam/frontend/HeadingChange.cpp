@@ -133,7 +133,7 @@ void CHeadingChangeEstimator::TOptions::saveToConfigFile(mrpt::config::CConfigFi
 	c.write(s, "inlier_px", inlier_px, 30, 10, "Epipolar distance of an inlier [px]");
 }
 
-CHeadingChangeEstimator::CHeadingChangeEstimator(const TOptions& options, double matchRatio) : m_options(options)
+CHeadingChangeEstimator::CHeadingChangeEstimator(const TOptions& options, double matchRatio)
 {
 	m_settings.matchRatio = matchRatio;
 	m_settings.minInliers = options.min_inliers;

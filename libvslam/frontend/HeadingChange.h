@@ -165,7 +165,6 @@ class CHeadingChangeEstimator
 
 	/** `matchRatio`: the features' ratio test. */
 	CHeadingChangeEstimator(const TOptions& options, double matchRatio);
-	const TOptions& options() const { return m_options; }
 
 	/** estimateHeadingChange() with these options. */
 	std::optional<HeadingChangeEstimate> estimate(const ImageFeatures& first, const ImageFeatures& second,
@@ -175,7 +174,6 @@ class CHeadingChangeEstimator
 	}
 
    private:
-	TOptions m_options;
 	THeadingEstimationOptions m_settings;
 };
 }  // namespace vslam

@@ -84,7 +84,6 @@ class CLandmarkCreator
 		: m_options(options), m_matchRatio(matchRatio), m_keepDepthStd(keepDepthStd)
 	{
 	}
-	const TOptions& options() const { return m_options; }
 
 	/** Builds a landmark whose frame is the robot frame of the newest view.
 	 * `mount` is the camera pose on the robot (the newest view's). */

@@ -83,7 +83,6 @@ class CLandmarkRecognizer
 
 	/** `matchRatio`: the features' ratio test. */
 	CLandmarkRecognizer(const TOptions& options, double matchRatio) : m_options(options), m_matchRatio(matchRatio) {}
-	const TOptions& options() const { return m_options; }
 
 	/** The measurement of `landmark` in `image`, if the pose solve finds at
 	 * least min_inliers inliers. */
