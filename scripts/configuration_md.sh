@@ -12,9 +12,9 @@ BIN="${1:-$ROOT/build/bin}"
 # Configuration reference
 
 Every key of every INI section (one per component), its default and its meaning, generated from the
-code (`scripts/configuration_md.sh`; a test fails when this file is stale). `config_ini/camera.ini`
-lists what a camera + odometry robot changes from these defaults, `config_ini/paper.ini` the paper's
-settings. `--set SECTION.KEY=VALUE` overrides any key; an unknown or misspelled key, or a value out of
+code (`scripts/configuration_md.sh`; a test fails when this file is stale). The defaults are the
+camera configuration's (`config_ini/camera.ini`, chosen on the development homes); `config_ini/paper.ini`
+holds the paper's settings. `--set SECTION.KEY=VALUE` overrides any key; an unknown or misspelled key, or a value out of
 range, is an error naming the file, section and key.
 
 ## `vslam`

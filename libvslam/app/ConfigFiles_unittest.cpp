@@ -86,6 +86,33 @@ TEST(ConfigFiles, TheExampleShowsTheDefaults)
 	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), expected);
 }
 
+TEST(ConfigFiles, TheCodesDefaultsAreTheCameraConfiguration)
+{
+	// camera.ini only names its input and output besides the defaults.
+	mrpt::config::CConfigFileMemory saved;
+	CVSlamApp::TOptions().saveToConfigFile(saved, CVSlamApp::TOptions::kSection);
+	CVSlamParticleFilter::TOptions().saveToConfig(saved);
+	std::string text;
+	saved.getContent(text);
+	const mrpt::config::CConfigFileMemory defaults(text);
+	const mrpt::config::CConfigFileMemory camera(effectiveOptions(kConfigDir / "camera.ini"));
+	const std::set<std::string> cameraOnly = {"rawlog_file", "output_dir"};
+	std::vector<std::string> sections;
+	defaults.getAllSections(sections);
+	ASSERT_GT(sections.size(), 10u);
+	for (const auto& section : sections)
+	{
+		std::vector<std::string> keys;
+		defaults.getAllKeys(section, keys);
+		for (const auto& key : keys)
+		{
+			if (lower(section) == CVSlamApp::TOptions::kSection && cameraOnly.count(lower(key))) continue;
+			EXPECT_EQ(camera.read_string(section, key, "<absent>"), defaults.read_string(section, key, "<absent>"))
+				<< "[" << section << "] " << key;
+		}
+	}
+}
+
 TEST(ConfigFiles, TheDemoIsTheCameraConfigurationWithTheDemosFiles)
 {
 	// Only these [vslam] keys may differ: the demo's data, output and seed.

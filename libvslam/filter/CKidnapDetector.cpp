@@ -33,7 +33,7 @@ void CKidnapDetector::TOptions::saveToConfigFile(
 	c.write(s, "min_distinct_landmarks", static_cast<int>(min_distinct_landmarks), 25, 12,
 		"... involving at least this many different landmarks");
 	c.write(s, "single_landmark_frames", static_cast<int>(single_landmark_frames), 25, 12,
-		"... or this many frames of a single landmark (0: never)");
+		"... or this many frames of a single visual landmark (0: never)");
 	c.write(s, "explained_min_fraction", explained_min_fraction, 25, 12,
 		"Weight fraction of particles whose gate must hold a measurement for it to count as explained");
 	c.write(s, "revert_on_contradiction", revert_on_contradiction, 25, 12,
@@ -60,7 +60,7 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 	}
 
 	std::vector<KnownMeasurement> counted;
-	bool anyExplained = false, anyAnchored = false;
+	bool anyExplained = false, anyAnchoredPose = false;
 	for (const auto& e : evidence)
 	{
 		const bool isAnchored = anchored(e.created);
@@ -68,7 +68,7 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 		if (!isAnchored && e.explained) continue;
 		counted.push_back(e.measurement);
 		anyExplained = anyExplained || e.explained;
-		anyAnchored = anyAnchored || isAnchored;
+		anyAnchoredPose = anyAnchoredPose || (isAnchored && e.measurement.m->kind() == LandmarkKind::Pose);
 	}
 	if (counted.empty()) return Verdict::Neutral;
 	if (anyExplained)
@@ -85,22 +85,24 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 		m_hypothesis.explainedFraction(counted, ctx.likelihood) >= options.explained_min_fraction)
 	{
 		m_hypothesis.confirm(counted, ctx.likelihood, ctx.rng);
-		m_hypothesisAnchored = m_hypothesisAnchored || anyAnchored;
+		m_hypothesisAnchoredPose = m_hypothesisAnchoredPose || anyAnchoredPose;
 	}
 	else
 	{
 		m_hypothesis.start(
 			counted, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng);
-		m_hypothesisAnchored = anyAnchored;
+		m_hypothesisAnchoredPose = anyAnchoredPose;
 	}
 
 	// Young landmarks are placed less surely than anchored ones: one of them
-	// alone never confirms a kidnap, two distinct ones may.
+	// alone never confirms a kidnap, two distinct ones may. One point landmark
+	// leaves each frame's pose free on a circle around it: only a landmark
+	// that measures the whole pose may confirm alone.
 	const auto& h = m_hypothesis;
 	const bool confirmed = h.active() &&
 		((h.support() >= options.min_unexplained_frames &&
 		  h.distinctLandmarks() >= options.min_distinct_landmarks) ||
-		 (options.single_landmark_frames > 0 && m_hypothesisAnchored &&
+		 (options.single_landmark_frames > 0 && m_hypothesisAnchoredPose &&
 		  h.support() >= options.single_landmark_frames));
 	if (confirmed)
 	{

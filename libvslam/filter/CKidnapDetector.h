@@ -22,8 +22,10 @@
  * hypothesis restarts from that frame. Kidnapping is declared when the
  * hypothesis has explained `min_unexplained_frames` frames over at least
  * `min_distinct_landmarks` landmarks, or `single_landmark_frames` frames
- * of one landmark if an anchored landmark is among its support (a young
- * landmark is placed less surely), while the filter explained none. False
+ * of one landmark if an anchored landmark that measures the whole pose (a
+ * visual landmark) is among its support (a young landmark is placed less
+ * surely; a point landmark leaves the pose free on a circle around it),
+ * while the filter explained none. False
  * recognitions are mutually inconsistent, so they keep restarting the
  * hypothesis instead of confirming it. Any explained anchored measurement
  * drops the hypothesis.
@@ -56,9 +58,10 @@ class CKidnapDetector
 		bool enabled = true;
 		uint32_t min_unexplained_frames = 3;
 		uint32_t min_distinct_landmarks = 2;
-		/** ... or this many frames when they all measure one landmark
-		 * (0: never). */
-		uint32_t single_landmark_frames = 6;
+		/** ... or this many frames when they all measure one visual landmark
+		 * (0: never): a carried robot often sees one mapped landmark
+		 * briefly, then nothing it knows. */
+		uint32_t single_landmark_frames = 4;
 		double explained_min_fraction = 0.01;
 		/** Keep the cloud left at a kidnap, and go back to it when another
 		 * landmark contradicts the kidnap (see the file comment). */
@@ -135,7 +138,7 @@ class CKidnapDetector
 	bool m_localized = true;
 	uint64_t m_detections = 0;
 	CRelocalizationHypothesis m_hypothesis;
-	bool m_hypothesisAnchored = false;  //!< an anchored landmark supports it
+	bool m_hypothesisAnchoredPose = false;  //!< an anchored pose-kind landmark supports it
 	CRelocalizationHypothesis m_return;
 	/** What the return test may use: landmarks anchored when the kidnap was
 	 * declared, other than those that confirmed it. */

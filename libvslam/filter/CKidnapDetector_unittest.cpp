@@ -112,12 +112,57 @@ TEST_F(KidnapDetectorTest, InconsistentFalseRecognitionsNeverConfirm)
 
 TEST_F(KidnapDetectorTest, OneLandmarkNeedsMoreFrames)
 {
+	for (const int frames : {4, 6})
+	{
+		CKidnapDetector d;
+		d.options.single_landmark_frames = frames;
+		feed(d, 0, {});
+		const auto z1 = se2::between(kTrue, kL1);
+		for (int f = 1; f < frames; f++)
+			EXPECT_EQ(feed(d, f, {seen(0, z1, false, at(0))}), V::Unexplained) << f;
+		EXPECT_EQ(feed(d, frames, {seen(0, z1, false, at(0))}), V::Kidnapped) << frames;
+	}
+}
+
+TEST(KidnapDetector, OnePointLandmarkAloneNeverConfirms)
+{
+	// A range-bearing landmark leaves each frame's pose free on a circle
+	// around it: however many frames of it a hypothesis explains, no kidnap;
+	// a second point landmark, then, may confirm one.
+	mrpt::random::getRandomGenerator().randomize(5);
+	LandmarkBank bank;
+	for (const auto& xy : {Eigen::Vector2d(3, 0), Eigen::Vector2d(0, 3)})
+	{
+		LandmarkEstimate l;
+		l.kind = LandmarkKind::Point;
+		l.mean << xy, 0;
+		l.cov.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * 1e-4;
+		bank.push_back(l);
+	}
+	CMotionModel model;
+	COdometryAccumulator noMotion;
+	CRobustLikelihood likelihood;
+	const se2::Pose truth{0.5, 0.5, 0.3};
+	std::vector<LandmarkMeasurement> storage;
+	storage.reserve(100);
+	const auto seen = [&](size_t slot, const Eigen::Vector2d& p) {
+		const double dx = p[0] - truth.x, dy = p[1] - truth.y;
+		storage.push_back(vslam::testing::rangeBearingMeasurement(
+			int64_t(slot + 1), std::hypot(dx, dy), se2::wrap(std::atan2(dy, dx) - truth.phi)));
+		return CKidnapDetector::Evidence{{&storage.back(), slot, 0}, mrpt::Clock::fromDouble(0), false};
+	};
+	const auto feed = [&](CKidnapDetector& d, double t, const std::vector<CKidnapDetector::Evidence>& ev) {
+		const MotionPrior mp(noMotion, model);
+		return d.update(mrpt::Clock::fromDouble(t), ev,
+			{mp, bank, 2000, likelihood, mrpt::random::getRandomGenerator()});
+	};
 	CKidnapDetector d;
 	feed(d, 0, {});
-	const auto z1 = se2::between(kTrue, kL1);
-	for (int f = 1; f < 6; f++)
-		EXPECT_EQ(feed(d, f, {seen(0, z1, false, at(0))}), V::Unexplained) << f;
-	EXPECT_EQ(feed(d, 6, {seen(0, z1, false, at(0))}), V::Kidnapped);
+	for (int f = 1; f <= 12; f++) EXPECT_EQ(feed(d, f, {seen(0, {3, 0})}), V::Unexplained) << f;
+	EXPECT_EQ(d.kidnapsDetected(), 0u);
+	V last = V::Unexplained;
+	for (int f = 13; f <= 20 && last != V::Kidnapped; f++) last = feed(d, f, {seen(0, {3, 0}), seen(1, {0, 3})});
+	EXPECT_EQ(last, V::Kidnapped);
 }
 
 TEST_F(KidnapDetectorTest, OneYoungLandmarkAloneNeverConfirmsTwoDo)

@@ -85,9 +85,10 @@ class CMeasurementExtractor
 		 * times the covariance its pose solve predicts (relPoseCov, where
 		 * the rawlog has one): a measurement from a few points in a small
 		 * part of the image counts for less. The prediction sees only the
-		 * pixel error, not the landmark's own, hence a factor. 0: Sigma_vis
-		 * alone (the paper). */
-		double predicted_cov_scale = 0;
+		 * pixel error, not the landmark's own, hence a factor: 4 is about how
+		 * far the actual errors exceed the prediction. 0: Sigma_vis alone
+		 * (the paper). */
+		double predicted_cov_scale = 4;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& cfg,
@@ -120,7 +121,7 @@ class CMeasurementExtractor
 	 * them (COdometryAccumulator.h). Not in the paper. */
 	struct THeadingChangeOptions : public mrpt::config::CLoadableOptions
 	{
-		bool enabled = false;
+		bool enabled = true;
 		/** The variance given to a heading change is its predicted variance
 		 * plus kMinStd^2, a floor against a zero variance from a perfect fit. */
 		static constexpr double kMinStd = 0.01 * M_PI / 180;  //!< rad

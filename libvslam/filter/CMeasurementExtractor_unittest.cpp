@@ -108,6 +108,7 @@ TEST(CMeasurementExtractor, PredictedCovarianceScaledAddsToSigmaVisOnlyWhenAsked
 	sf.insert(visual(2, 1.0, 40));  // no prediction (all zero): Sigma_vis alone
 
 	CMeasurementExtractor paper;
+	paper.visual.predicted_cov_scale = 0;
 	const auto fixed = paper.extract(sf).measurements;
 	ASSERT_EQ(fixed.size(), 2u);
 	EXPECT_NEAR(fixed[0].R(1, 1), 0.09 * 0.09, 1e-12);
@@ -199,10 +200,12 @@ TEST(CMeasurementExtractor, ImpossibleRangeBearingValuesAreInputErrors)
 TEST(CMeasurementExtractor, HeadingChangesPassOnlyWhenEnabledWithTheirNoise)
 {
 	CMeasurementExtractor ex;
+	EXPECT_TRUE(ex.headingChange.enabled);  // on by default (the camera configuration)
+	ex.headingChange.enabled = false;  // the paper's filter
 	mrpt::obs::CSensoryFrame sf;
 	sf.insert(headingChange(10.0, 10.4, 0.05, 1e-3));
 	FrameMeasurements f = ex.extract(sf);
-	EXPECT_FALSE(f.headingChange);  // off by default: the paper's filter
+	EXPECT_FALSE(f.headingChange);
 	EXPECT_TRUE(f.empty());
 	EXPECT_EQ(ex.stats().headingChangesSeen, 1u);
 	EXPECT_EQ(ex.stats().headingChangesPassed, 0u);

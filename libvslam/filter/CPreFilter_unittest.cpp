@@ -9,14 +9,14 @@
 using namespace vslam;
 using V = CPreFilter::Verdict;
 
-TEST(CPreFilter, PaperDefaults)
+TEST(CPreFilter, DefaultsArePapersButASlopeForAKnownMount)
 {
 	const CPreFilter pf;
-	EXPECT_EQ(pf.check(3.0, 10, 0.1), V::Accepted);  // boundaries accepted
+	EXPECT_EQ(pf.check(3.0, 10, 0.02), V::Accepted);  // boundaries accepted
 	EXPECT_EQ(pf.check(3.01, 50, 0.0), V::RejectedProjErrRMS);
 	EXPECT_EQ(pf.check(1.0, 9, 0.0), V::RejectedNPoints);
-	EXPECT_EQ(pf.check(1.0, 50, 0.11), V::RejectedSlope);
-	EXPECT_EQ(pf.check(1.0, 50, -0.11), V::RejectedSlope);
+	EXPECT_EQ(pf.check(1.0, 50, 0.021), V::RejectedSlope);
+	EXPECT_EQ(pf.check(1.0, 50, -0.021), V::RejectedSlope);
 }
 
 TEST(CPreFilter, FirstViolatedRuleInThePapersOrder)

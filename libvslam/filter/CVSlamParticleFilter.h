@@ -111,8 +111,11 @@ class CVSlamParticleFilter
 	/** [vslam_particle_filter] */
 	struct TParticleFilterOptions : public mrpt::config::CLoadableOptions
 	{
-		/** Number of particles (MRPT's key name). */
-		uint32_t sampleSize = 200;
+		/** Number of particles (MRPT's key name). The paper's 200 let each
+		 * resampling, while the robot explores, move the cloud's mean by its
+		 * spread over the square root of the count; 1,000 keeps the estimate
+		 * with the odometry between landmarks. */
+		uint32_t sampleSize = 1000;
 		/** Resample when ESS < BETA (MRPT's key name). */
 		double BETA = 0.5;
 		mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm

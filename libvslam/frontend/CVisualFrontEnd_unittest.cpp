@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <libvslam/frontend/CVisualFrontEnd.h>
 #include <mrpt/math/wrap2pi.h>
+#include <Eigen/Dense>
 #include <tests/support/RoomRenderer.h>
 
 #include <algorithm>
@@ -23,6 +24,8 @@ struct LapsResult
 {
 	size_t images = 0, created = 0;
 	std::vector<double> translationErrors, headingErrors;
+	/** Each measurement's error, squared, normalized by its predicted covariance. */
+	std::vector<double> predictedMahalanobis2;
 	std::vector<std::string> rows;  //!< every output, for determinism
 	size_t landmarksInDatabase = 0, pruned = 0;
 	size_t inconsistent = 0;  //!< recognitions not reported for [vslam_recognition] odometry_gate_s
@@ -85,6 +88,9 @@ LapsResult driveLaps(const CVisualFrontEnd::TOptions& options, double laps, doub
 			const mrpt::poses::CPose2D truth = frameOf.at(m->landmarkID) - robot;
 			run.translationErrors.push_back((m->relPose - truth).norm());
 			run.headingErrors.push_back(std::abs(mrpt::math::wrapToPi(m->relPose.phi() - truth.phi())));
+			const Eigen::Vector3d error(m->relPose.x() - truth.x(), m->relPose.y() - truth.y(),
+				mrpt::math::wrapToPi(m->relPose.phi() - truth.phi()));
+			run.predictedMahalanobis2.push_back(error.dot(m->relPoseCov.asEigen().ldlt().solve(error)));
 			const auto d = m->relPoseCov.asEigen().diagonal();
 			if (d.allFinite() && (d.array() > 0).all()) run.withPredictedCovariance++;
 			if (k >= frames - static_cast<int>(2 * M_PI * radius / step) && truth.norm() > 0.5)
@@ -116,11 +122,44 @@ void expectTruePosesOnTheSecondLap(const LapsResult& run)
 }
 }  // namespace
 
+/** The front-end in its plain form: SIFT on the raw image, every inlier
+ * weighted alike (config_ini/paper.ini). */
+CVisualFrontEnd::TOptions plainFrontEnd()
+{
+	CVisualFrontEnd::TOptions o;
+	o.features.sift_denoise_sigma = 0;
+	o.recognition.structure_weighted = false;
+	return o;
+}
+
 TEST(CVisualFrontEnd, CreatesOnTheFirstLapRecognizesOnTheSecondWithTheTruePose)
 {
-	const LapsResult run = driveLaps(CVisualFrontEnd::TOptions(), 2);
+	const LapsResult run = driveLaps(plainFrontEnd(), 2);
 	expectTruePosesOnTheSecondLap(run);
 	EXPECT_EQ(run.withPredictedCovariance, run.translationErrors.size());
+}
+
+TEST(CVisualFrontEnd, WithTheDefaultsAFarMeasurementSaysItIsUncertain)
+{
+	// Denoised SIFT and structure-weighted poses (the defaults) measure as
+	// well, but one measurement from 14 inliers at the edge of a landmark's
+	// reach is 0.43 m and 8.5 deg off; its own predicted covariance gives it
+	// 0.57 m. The filter takes each prediction times predicted_cov_scale = 4
+	// (in std); every error lies well inside that (measured: at most 5.6
+	// times the predicted std, 1.4 times the scaled one).
+	const LapsResult run = driveLaps(CVisualFrontEnd::TOptions(), 2);
+	EXPECT_GE(run.created, 4u);
+	EXPECT_GE(run.translationErrors.size(), run.images / 2) << "recognitions";
+	EXPECT_LT(median(run.translationErrors), 0.03);
+	EXPECT_LT(median(run.headingErrors), 0.5 * kDeg);
+	ASSERT_EQ(run.withPredictedCovariance, run.translationErrors.size());
+	size_t far = 0;
+	for (size_t i = 0; i < run.translationErrors.size(); i++)
+		if (run.translationErrors[i] > 0.3 || run.headingErrors[i] > 5 * kDeg) far++;
+	EXPECT_LE(far, run.translationErrors.size() / 100) << "measurements beyond 0.3 m or 5 deg";
+	const double chi2_3dof_999 = 16.27, scale = 4;
+	EXPECT_LT(*std::max_element(run.predictedMahalanobis2.begin(), run.predictedMahalanobis2.end()),
+		chi2_3dof_999 * scale * scale);
 }
 
 TEST(CVisualFrontEnd, WithoutSiftUpsamplingStillRecognizesWithTheTruePose)
@@ -142,22 +181,34 @@ double medianScaleError(const LapsResult& run)
 	return median(perLandmark);
 }
 
-TEST(CVisualFrontEnd, LaterSightingsCorrectTheScaleOfLandmarksBuiltOnNoisyOdometry)
+/** Median scale errors of the landmarks of three laps on noisy odometry
+ * (the paper's sigma_T: each landmark's 0.3 m creation baseline gives it a
+ * scale error of several percent), as built and with the scale track. */
+std::pair<double, double> scaleErrorsAsBuiltAndRefined(CVisualFrontEnd::TOptions o)
 {
-	// Odometry with the paper's sigma_T: each landmark's 0.3 m creation
-	// baseline gives it a scale error of several percent; the sightings of
-	// two more laps, against the same noisy odometry, bring it down.
-	CVisualFrontEnd::TOptions o;
 	o.scale.enabled = false;
 	const LapsResult asBuilt = driveLaps(o, 3, 1e9, 0.05);
 	o.scale.enabled = true;
 	const LapsResult refined = driveLaps(o, 3, 1e9, 0.05);
-	ASSERT_GE(asBuilt.rangeRatiosLastLap.size(), 4u);
-	ASSERT_GE(refined.rangeRatiosLastLap.size(), 4u);
+	EXPECT_GE(asBuilt.rangeRatiosLastLap.size(), 4u);
+	EXPECT_GE(refined.rangeRatiosLastLap.size(), 4u);
 	std::cout << "median landmark scale error: as built " << medianScaleError(asBuilt) << ", refined "
 			  << medianScaleError(refined) << "\n";
-	EXPECT_LT(medianScaleError(refined), 0.6 * medianScaleError(asBuilt));
-	EXPECT_LT(medianScaleError(refined), 0.045);  // measured 0.029 (as built 0.095)
+	return {medianScaleError(asBuilt), medianScaleError(refined)};
+}
+
+TEST(CVisualFrontEnd, LaterSightingsCorrectTheScaleOfLandmarksBuiltOnNoisyOdometry)
+{
+	// The sightings of two more laps, against the same noisy odometry,
+	// bring the scale error down.
+	const auto [asBuilt, refined] = scaleErrorsAsBuiltAndRefined(plainFrontEnd());
+	EXPECT_LT(refined, 0.6 * asBuilt);
+	EXPECT_LT(refined, 0.045);  // measured 0.039 (as built 0.095)
+	// Structure-weighted poses (the default) refine less here: measured
+	// 0.050 (as built 0.091), 0.040 without them.
+	const auto [asBuiltWeighted, refinedWeighted] = scaleErrorsAsBuiltAndRefined(CVisualFrontEnd::TOptions());
+	EXPECT_LT(refinedWeighted, 0.6 * asBuiltWeighted);
+	EXPECT_LT(refinedWeighted, 0.06);
 }
 
 /** The measurement rows ("M k ...") of images k in [from, to). */
@@ -184,6 +235,7 @@ TEST(CVisualFrontEnd, ARecognitionTheOdometryRulesOutCountsAsRecognizedButIsNotR
 	CVisualFrontEnd::TOptions o;
 	o.scale.enabled = false;
 	const int jump = 110, afterHorizon = jump + 11;  // of about 168 images
+	o.recognition.odometry_gate.horizon = 0;
 	const LapsResult ungated = driveLaps(o, 2, 1e9, 0, jump);
 	o.recognition.odometry_gate.horizon = 5;
 	const LapsResult gated = driveLaps(o, 2, 1e9, 0, jump);
@@ -232,3 +284,4 @@ TEST(CVisualFrontEnd, LandmarksExpectedButNotSeenArePruned)
 	EXPECT_EQ(pruned.landmarksInDatabase + pruned.pruned, pruned.created);
 	EXPECT_GE(pruned.pruned, pruned.created - 1);
 }
+

@@ -155,7 +155,7 @@ class CHeadingChangeEstimator
 	{
 		static constexpr const char* kSection = "vslam_heading_measurement";
 
-		bool enabled = false;  //!< measure and emit CObservationHeadingChange
+		bool enabled = true;  //!< measure and emit CObservationHeadingChange
 		int min_inliers = 20;  //!< matches that must fit the motion
 		double inlier_px = 1.5;  //!< epipolar distance of an inlier, px
 

@@ -45,8 +45,9 @@ class CFeatureExtractor
 		bool sift_upsample = true;
 		/** Gaussian blur (std, px) of the image before SIFT: a cheap camera's
 		 * pixel noise and JPEG blocks make fine-scale extrema that do not repeat
-		 * from one image to the next; a slight blur takes them out (0: none). */
-		double sift_denoise_sigma = 0;
+		 * from one image to the next; a slight blur takes them out (0: none,
+		 * the paper's SIFT). */
+		double sift_denoise_sigma = 0.7;
 		/** Lowe's ratio test between the best and second-best match, for
 		 * every matching of these features (creation, candidates,
 		 * recognition, heading change). */

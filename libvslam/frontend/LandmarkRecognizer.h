@@ -69,13 +69,15 @@ class CLandmarkRecognizer
 		 * point's depth uncertainty from creation (generalized least squares,
 		 * WeightedPoseRefinement.h); the predicted uncertainty is then that
 		 * fit's, the structure included. Landmarks keep each point's depth std
-		 * (4 bytes per point). */
-		bool structure_weighted = false;
+		 * (4 bytes per point). A landmark seen from the side is measured
+		 * closer without it. */
+		bool structure_weighted = true;
 		/** A recognition is kept only if it agrees with the same landmark's last
 		 * kept one, carried to now by the odometry, when that one is at most
 		 * `horizon` old (OdometryConsistency.h; INI key odometry_gate_s, 0: no
-		 * test). The tolerances are OdometryConsistency's. */
-		TOdometryConsistencyOptions odometry_gate;
+		 * test). The tolerances are OdometryConsistency's. A few wrong matches
+		 * on a self-similar texture can agree on a pose metres off. */
+		TOdometryConsistencyOptions odometry_gate{/* horizon, s */ 5};
 
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 		void saveToConfigFile(mrpt::config::CConfigFileBase& target, const std::string& section) const override;

@@ -78,7 +78,10 @@ void expectTextureOnEveryFace(const std::string& worldFile, const Eigen::Vector2
 	cam.setIntrinsicParamsFromValues(250, 250, 159.5, 119.5);
 	cam.dist.fill(0);
 	CameraRenderer renderer(cam);
-	const CFeatureExtractor extractor(CFeatureExtractor::TOptions{});
+	// The textures' own features: these views have no camera noise to blur away.
+	CFeatureExtractor::TOptions features;
+	features.sift_denoise_sigma = 0;
+	const CFeatureExtractor extractor(features);
 	const auto calibration = CImageCalibration::from(cam, 320, 240, CImageCalibration::TOptions(), "test");
 	const world::FreeSpace free(plan, 0.2, start);
 	const auto segments = plan.obstacleSegments();
