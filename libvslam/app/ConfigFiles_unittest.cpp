@@ -86,6 +86,30 @@ TEST(ConfigFiles, TheExampleShowsTheDefaults)
 	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), expected);
 }
 
+namespace
+{
+/** Every key of `reference` has the same value in `actual`, but the
+ * [vslam] keys in `vslamKeysThatMayDiffer` (lower case). */
+void expectSameValues(const mrpt::config::CConfigFileMemory& reference, const mrpt::config::CConfigFileMemory& actual,
+	const std::set<std::string>& vslamKeysThatMayDiffer)
+{
+	std::vector<std::string> sections;
+	reference.getAllSections(sections);
+	ASSERT_GT(sections.size(), 10u);
+	for (const auto& section : sections)
+	{
+		std::vector<std::string> keys;
+		reference.getAllKeys(section, keys);
+		for (const auto& key : keys)
+		{
+			if (lower(section) == CVSlamApp::TOptions::kSection && vslamKeysThatMayDiffer.count(lower(key))) continue;
+			EXPECT_EQ(actual.read_string(section, key, "<absent>"), reference.read_string(section, key, "<absent>"))
+				<< "[" << section << "] " << key;
+		}
+	}
+}
+}  // namespace
+
 TEST(ConfigFiles, TheCodesDefaultsAreTheCameraConfiguration)
 {
 	// camera.ini only names its input and output besides the defaults.
@@ -94,46 +118,16 @@ TEST(ConfigFiles, TheCodesDefaultsAreTheCameraConfiguration)
 	CVSlamParticleFilter::TOptions().saveToConfig(saved);
 	std::string text;
 	saved.getContent(text);
-	const mrpt::config::CConfigFileMemory defaults(text);
-	const mrpt::config::CConfigFileMemory camera(effectiveOptions(kConfigDir / "camera.ini"));
-	const std::set<std::string> cameraOnly = {"rawlog_file", "output_dir"};
-	std::vector<std::string> sections;
-	defaults.getAllSections(sections);
-	ASSERT_GT(sections.size(), 10u);
-	for (const auto& section : sections)
-	{
-		std::vector<std::string> keys;
-		defaults.getAllKeys(section, keys);
-		for (const auto& key : keys)
-		{
-			if (lower(section) == CVSlamApp::TOptions::kSection && cameraOnly.count(lower(key))) continue;
-			EXPECT_EQ(camera.read_string(section, key, "<absent>"), defaults.read_string(section, key, "<absent>"))
-				<< "[" << section << "] " << key;
-		}
-	}
+	expectSameValues(mrpt::config::CConfigFileMemory(text),
+		mrpt::config::CConfigFileMemory(effectiveOptions(kConfigDir / "camera.ini")), {"rawlog_file", "output_dir"});
 }
 
 TEST(ConfigFiles, TheDemoIsTheCameraConfigurationWithTheDemosFiles)
 {
 	// Only these [vslam] keys may differ: the demo's data, output and seed.
-	const std::set<std::string> demoOnly = {
-		"rawlog_file", "output_dir", "random_seed", "ground_truth_file", "initial_pose_from_ground_truth"};
-	const mrpt::config::CConfigFileMemory camera(effectiveOptions(kConfigDir / "camera.ini"));
-	const mrpt::config::CConfigFileMemory demo(effectiveOptions(kConfigDir / "demo_rendered.ini"));
-	std::vector<std::string> sections;
-	camera.getAllSections(sections);
-	ASSERT_FALSE(sections.empty());
-	for (const auto& section : sections)
-	{
-		std::vector<std::string> keys;
-		camera.getAllKeys(section, keys);
-		for (const auto& key : keys)
-		{
-			if (lower(section) == CVSlamApp::TOptions::kSection && demoOnly.count(lower(key))) continue;
-			EXPECT_EQ(demo.read_string(section, key, "<absent>"), camera.read_string(section, key, "<absent>"))
-				<< "[" << section << "] " << key;
-		}
-	}
+	expectSameValues(mrpt::config::CConfigFileMemory(effectiveOptions(kConfigDir / "camera.ini")),
+		mrpt::config::CConfigFileMemory(effectiveOptions(kConfigDir / "demo_rendered.ini")),
+		{"rawlog_file", "output_dir", "random_seed", "ground_truth_file", "initial_pose_from_ground_truth"});
 }
 
 TEST(ConfigFiles, EveryShippedVslamIniLoads)

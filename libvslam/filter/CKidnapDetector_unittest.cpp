@@ -131,14 +131,7 @@ TEST(KidnapDetector, OnePointLandmarkAloneNeverConfirms)
 	// a second point landmark, then, may confirm one.
 	mrpt::random::getRandomGenerator().randomize(5);
 	LandmarkBank bank;
-	for (const auto& xy : {Eigen::Vector2d(3, 0), Eigen::Vector2d(0, 3)})
-	{
-		LandmarkEstimate l;
-		l.kind = LandmarkKind::Point;
-		l.mean << xy, 0;
-		l.cov.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * 1e-4;
-		bank.push_back(l);
-	}
+	for (const Eigen::Vector2d& xy : {Eigen::Vector2d(3, 0), Eigen::Vector2d(0, 3)}) bank.push_back(vslam::testing::pointLandmark(xy));
 	CMotionModel model;
 	COdometryAccumulator noMotion;
 	CRobustLikelihood likelihood;
@@ -146,9 +139,7 @@ TEST(KidnapDetector, OnePointLandmarkAloneNeverConfirms)
 	std::vector<LandmarkMeasurement> storage;
 	storage.reserve(100);
 	const auto seen = [&](size_t slot, const Eigen::Vector2d& p) {
-		const double dx = p[0] - truth.x, dy = p[1] - truth.y;
-		storage.push_back(vslam::testing::rangeBearingMeasurement(
-			int64_t(slot + 1), std::hypot(dx, dy), se2::wrap(std::atan2(dy, dx) - truth.phi)));
+		storage.push_back(vslam::testing::rangeBearingFrom(truth, int64_t(slot + 1), p));
 		return CKidnapDetector::Evidence{{&storage.back(), slot, 0}, mrpt::Clock::fromDouble(0), false};
 	};
 	const auto feed = [&](CKidnapDetector& d, double t, const std::vector<CKidnapDetector::Evidence>& ev) {

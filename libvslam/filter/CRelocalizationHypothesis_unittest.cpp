@@ -12,21 +12,9 @@ TEST(CRelocalizationHypothesis, RangeBearingRingCollapsesWithMoreLandmarks)
 	// landmark picks the right part of it.
 	mrpt::random::getRandomGenerator().randomize(12);
 	LandmarkBank bank;
-	for (const auto& xy : {Eigen::Vector2d(3, 0), Eigen::Vector2d(0, 3)})
-	{
-		LandmarkEstimate l;
-		l.kind = LandmarkKind::Point;
-		l.mean << xy, 0;
-		l.cov.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * 1e-4;
-		bank.push_back(l);
-	}
+	for (const Eigen::Vector2d& xy : {Eigen::Vector2d(3, 0), Eigen::Vector2d(0, 3)}) bank.push_back(pointLandmark(xy));
 	const se2::Pose truth{0.5, 0.5, 0.3};
-	const auto rb = [&](int slot, const Eigen::Vector2d& p) {
-		const double dx = p[0] - truth.x, dy = p[1] - truth.y;
-		return rangeBearingMeasurement(slot + 1, std::hypot(dx, dy),
-			se2::wrap(std::atan2(dy, dx) - truth.phi));
-	};
-	const auto m1 = rb(0, {3, 0}), m2 = rb(1, {0, 3});
+	const auto m1 = rangeBearingFrom(truth, 1, {3, 0}), m2 = rangeBearingFrom(truth, 2, {0, 3});
 	CRobustLikelihood lik;
 	CRelocalizationHypothesis h;
 	ASSERT_TRUE(h.start({{&m1, 0, 0}}, bank, 2000, lik, mrpt::random::getRandomGenerator()));

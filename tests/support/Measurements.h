@@ -40,6 +40,23 @@ inline LandmarkMeasurement rangeBearingMeasurement(
 	return m;
 }
 
+/** A point landmark at xy, its covariance var times the identity. */
+inline LandmarkEstimate pointLandmark(const Eigen::Vector2d& xy, double var = 1e-4)
+{
+	LandmarkEstimate l;
+	l.kind = LandmarkKind::Point;
+	l.mean << xy, 0;
+	l.cov.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * var;
+	return l;
+}
+
+/** The exact range and bearing of the point landmark at xy from `robot`. */
+inline LandmarkMeasurement rangeBearingFrom(const se2::Pose& robot, int64_t id, const Eigen::Vector2d& xy)
+{
+	const double dx = xy[0] - robot.x, dy = xy[1] - robot.y;
+	return rangeBearingMeasurement(id, std::hypot(dx, dy), se2::wrap(std::atan2(dy, dx) - robot.phi));
+}
+
 inline LandmarkCreation creation(int64_t id)
 {
 	LandmarkCreation c;
