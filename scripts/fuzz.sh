@@ -15,6 +15,9 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_PER_TARGET="${1:-60}"
 TARGETS="${2:-fuzz_rawlog fuzz_observations fuzz_config fuzz_mrclam fuzz_landmark_map fuzz_frontend fuzz_scenario}"
 BUILD="$ROOT/build-fuzz"
+# Any UBSan report stops the target; the one alignment report MRPT's opengl
+# headers make is suppressed (scripts/ubsan.supp, CMakeLists.txt).
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$ROOT/scripts/ubsan.supp"
 BIN="$ROOT/build/bin"
 
 if ! command -v clang++ > /dev/null || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2> /dev/null | grep -q "ok installed"; then
