@@ -10,8 +10,8 @@
  *
  *   bench_frontend --benchmark_filter='Frame/640/1000/' [--set SECTION.KEY=VALUE ...]
  * Counters: frames/s (items_per_second) and ms per stage: features_ms,
- * search_ms, pose_ms, and with --set vslam_heading_measurement.enabled=true
- * heading_ms (the heading change from a view 6 cm back and 2 deg turned);
+ * search_ms, pose_ms, and heading_ms (the heading change from a view 6 cm
+ * back and 2 deg turned; none with --set vslam_heading_measurement.enabled=false);
  * bytes_per_landmark (points + stored descriptors) and
  * index_bytes_per_landmark.
  *
