@@ -111,10 +111,10 @@ class CVSlamParticleFilter
 	/** [vslam_particle_filter] */
 	struct TParticleFilterOptions : public mrpt::config::CLoadableOptions
 	{
-		/** Number of particles (MRPT's key name). The paper's 200 let each
-		 * resampling, while the robot explores, move the cloud's mean by its
-		 * spread over the square root of the count; 1,000 keeps the estimate
-		 * with the odometry between landmarks. */
+		/** Number of particles (MRPT's key name). Each resampling while the
+		 * robot explores moves the cloud's mean by about its spread over the
+		 * square root of the count: with the paper's 200 the estimate drifts
+		 * off the odometry between landmarks, with 1,000 it stays. */
 		uint32_t sampleSize = 1000;
 		/** Resample when ESS < BETA (MRPT's key name). */
 		double BETA = 0.5;
