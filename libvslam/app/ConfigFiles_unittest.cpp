@@ -76,14 +76,23 @@ TEST(ConfigFiles, TheExampleListsEveryKeyOfEverySection)
 	EXPECT_NO_THROW(config::checkNoUnknownKeys(ini, known));
 }
 
-TEST(ConfigFiles, TheExampleShowsTheDefaults)
+namespace
+{
+/** Every key of vslam with its default, as the effective configuration is written. */
+std::string defaultOptionsText()
 {
 	mrpt::config::CConfigFileMemory defaults;
 	CVSlamApp::TOptions().saveToConfigFile(defaults, CVSlamApp::TOptions::kSection);
 	CVSlamParticleFilter::TOptions().saveToConfig(defaults);
-	std::string expected;
-	defaults.getContent(expected);
-	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), expected);
+	std::string text;
+	defaults.getContent(text);
+	return text;
+}
+}  // namespace
+
+TEST(ConfigFiles, TheExampleShowsTheDefaults)
+{
+	EXPECT_EQ(effectiveOptions(kConfigDir / "vslam_example.ini"), defaultOptionsText());
 }
 
 namespace
@@ -113,12 +122,7 @@ void expectSameValues(const mrpt::config::CConfigFileMemory& reference, const mr
 TEST(ConfigFiles, TheCodesDefaultsAreTheCameraConfiguration)
 {
 	// camera.ini only names its input and output besides the defaults.
-	mrpt::config::CConfigFileMemory saved;
-	CVSlamApp::TOptions().saveToConfigFile(saved, CVSlamApp::TOptions::kSection);
-	CVSlamParticleFilter::TOptions().saveToConfig(saved);
-	std::string text;
-	saved.getContent(text);
-	expectSameValues(mrpt::config::CConfigFileMemory(text),
+	expectSameValues(mrpt::config::CConfigFileMemory(defaultOptionsText()),
 		mrpt::config::CConfigFileMemory(effectiveOptions(kConfigDir / "camera.ini")), {"rawlog_file", "output_dir"});
 }
 
