@@ -86,10 +86,10 @@ LapsResult driveLaps(const CVisualFrontEnd::TOptions& options, double laps, doub
 		{
 			run.rows.push_back("M " + std::to_string(k) + " " + m->exportTxtDataRow());
 			const mrpt::poses::CPose2D truth = frameOf.at(m->landmarkID) - robot;
-			run.translationErrors.push_back((m->relPose - truth).norm());
-			run.headingErrors.push_back(std::abs(mrpt::math::wrapToPi(m->relPose.phi() - truth.phi())));
 			const Eigen::Vector3d error(m->relPose.x() - truth.x(), m->relPose.y() - truth.y(),
 				mrpt::math::wrapToPi(m->relPose.phi() - truth.phi()));
+			run.translationErrors.push_back(error.head<2>().norm());
+			run.headingErrors.push_back(std::abs(error[2]));
 			run.predictedMahalanobis2.push_back(error.dot(m->relPoseCov.asEigen().ldlt().solve(error)));
 			const auto d = m->relPoseCov.asEigen().diagonal();
 			if (d.allFinite() && (d.array() > 0).all()) run.withPredictedCovariance++;
@@ -120,7 +120,6 @@ void expectTruePosesOnTheSecondLap(const LapsResult& run)
 	EXPECT_LT(*std::max_element(run.translationErrors.begin(), run.translationErrors.end()), 0.3);
 	EXPECT_LT(*std::max_element(run.headingErrors.begin(), run.headingErrors.end()), 5 * kDeg);
 }
-}  // namespace
 
 /** The front-end in its plain form: SIFT on the raw image, every inlier
  * weighted alike (config_ini/paper.ini). */
@@ -131,6 +130,7 @@ CVisualFrontEnd::TOptions plainFrontEnd()
 	o.recognition.structure_weighted = false;
 	return o;
 }
+}  // namespace
 
 TEST(CVisualFrontEnd, CreatesOnTheFirstLapRecognizesOnTheSecondWithTheTruePose)
 {
@@ -284,4 +284,3 @@ TEST(CVisualFrontEnd, LandmarksExpectedButNotSeenArePruned)
 	EXPECT_EQ(pruned.landmarksInDatabase + pruned.pruned, pruned.created);
 	EXPECT_GE(pruned.pruned, pruned.created - 1);
 }
-
