@@ -117,7 +117,7 @@ check_debian_package() {
 # The modules CI checks under the sanitizers: every file reader, the filter
 # and the front-end's parts, whose unit tests are short. The front-end's
 # multi-frame runs (CVisualFrontEnd.*, 30-110 s each under ASan) are left to
-# the whole sanitized suite. About 13 minutes on two cores against the whole
+# the whole sanitized suite. About 12 minutes on two cores against the whole
 # suite's 40 (scripts/setup.sh sanitize): CI stays within its time this way.
 SANITIZED_MODULES=(core config obs io models filter graph frontend)
 
