@@ -94,6 +94,7 @@ yaml filterNode(const CVSlamParticleFilter& f)
 	n["unexplained_frames"] = fs.unexplainedFrames;
 	n["kidnaps_detected"] = fs.kidnapsDetected;
 	n["kidnaps_reverted"] = fs.kidnapsReverted;
+	n["look_alike_landmarks"] = fs.lookAlikeLandmarks;
 	n["loop_closures"] = fs.loopClosures;
 	n["loop_closure_edges_left_out"] = fs.loopClosureEdgesLeftOut;
 	yaml h = yaml::Map();

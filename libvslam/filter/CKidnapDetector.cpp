@@ -33,7 +33,7 @@ void CKidnapDetector::TOptions::saveToConfigFile(
 	c.write(s, "min_distinct_landmarks", static_cast<int>(min_distinct_landmarks), 25, 12,
 		"... involving at least this many different landmarks");
 	c.write(s, "single_landmark_frames", static_cast<int>(single_landmark_frames), 25, 12,
-		"... or this many frames of a single visual landmark (0: never)");
+		"... or this many frames of one visual landmark, anchored and not a look-alike (0: never)");
 	c.write(s, "explained_min_fraction", explained_min_fraction, 25, 12,
 		"Weight fraction of particles whose gate must hold a measurement for it to count as explained");
 	c.write(s, "revert_on_contradiction", revert_on_contradiction, 25, 12,
@@ -54,28 +54,29 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 			m_verified = m_returnAnchor;
 			m_localized = true;
 			m_hypothesis.clear();
+			// The landmarks that confirmed the kidnap told a false story.
+			m_lookAlikes.insert(m_kidnapSupport.begin(), m_kidnapSupport.end());
 			m_reverts++;
 			return Verdict::Reverted;
 		}
 	}
 
 	std::vector<KnownMeasurement> counted;
-	bool anyExplained = false, anyAnchoredPose = false;
+	bool anyExplained = false, anyConfirmsAlone = false;
 	for (const auto& e : evidence)
 	{
-		const bool isAnchored = anchored(e.created);
 		// A young landmark explained is no evidence: it was placed from this belief.
-		if (!isAnchored && e.explained) continue;
+		if (!anchored(e.created) && e.explained) continue;
 		counted.push_back(e.measurement);
 		anyExplained = anyExplained || e.explained;
-		anyAnchoredPose = anyAnchoredPose || (isAnchored && e.measurement.m->kind() == LandmarkKind::Pose);
+		anyConfirmsAlone = anyConfirmsAlone || confirmsAlone(e);
 	}
 	if (counted.empty()) return Verdict::Neutral;
 	if (anyExplained)
 	{
 		m_verified = t;
 		m_localized = true;
-		m_hypothesis.clear();
+		dropHypothesis();
 		return Verdict::Localized;
 	}
 	m_localized = false;
@@ -85,24 +86,20 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 		m_hypothesis.explainedFraction(counted, ctx.likelihood) >= options.explained_min_fraction)
 	{
 		m_hypothesis.confirm(counted, ctx.likelihood, ctx.rng);
-		m_hypothesisAnchoredPose = m_hypothesisAnchoredPose || anyAnchoredPose;
+		m_hypothesisConfirmableAlone = m_hypothesisConfirmableAlone || anyConfirmsAlone;
 	}
 	else
 	{
 		m_hypothesis.start(
 			counted, ctx.bank, ctx.particles, ctx.likelihood, ctx.rng);
-		m_hypothesisAnchoredPose = anyAnchoredPose;
+		m_hypothesisConfirmableAlone = anyConfirmsAlone;
 	}
 
-	// Young landmarks are placed less surely than anchored ones: one of them
-	// alone never confirms a kidnap, two distinct ones may. One point landmark
-	// leaves each frame's pose free on a circle around it: only a landmark
-	// that measures the whole pose may confirm alone.
 	const auto& h = m_hypothesis;
 	const bool confirmed = h.active() &&
 		((h.support() >= options.min_unexplained_frames &&
 		  h.distinctLandmarks() >= options.min_distinct_landmarks) ||
-		 (options.single_landmark_frames > 0 && m_hypothesisAnchoredPose &&
+		 (options.single_landmark_frames > 0 && m_hypothesisConfirmableAlone &&
 		  h.support() >= options.single_landmark_frames));
 	if (confirmed)
 	{
@@ -110,6 +107,24 @@ CKidnapDetector::Verdict CKidnapDetector::update(
 		return Verdict::Kidnapped;
 	}
 	return Verdict::Unexplained;
+}
+
+bool CKidnapDetector::confirmsAlone(const Evidence& e) const
+{
+	// Young landmarks are placed less surely than anchored ones: one of them
+	// alone never confirms a kidnap, two distinct ones may. One point landmark
+	// leaves each frame's pose free on a circle around it: only a landmark
+	// that measures the whole pose may confirm alone. A look-alike has told
+	// a false story before.
+	return e.measurement.m->kind() == LandmarkKind::Pose && anchored(e.created) &&
+		m_lookAlikes.count(e.measurement.m->key) == 0;
+}
+
+void CKidnapDetector::dropHypothesis()
+{
+	if (m_hypothesis.active() && m_hypothesis.support() >= options.min_unexplained_frames)
+		m_lookAlikes.insert(m_hypothesis.landmarks().begin(), m_hypothesis.landmarks().end());
+	m_hypothesis.clear();
 }
 
 bool CKidnapDetector::contradictsKidnap(

@@ -30,6 +30,14 @@
  * hypothesis instead of confirming it. Any explained anchored measurement
  * drops the hypothesis.
  *
+ * Look-alikes. A hypothesis that explained `min_unexplained_frames` frames
+ * and was then dropped by an explained anchored measurement, or a kidnap
+ * that was reverted (below), was a consistent story told by the wrong
+ * landmarks: one recognized where it is not (a poster hung twice) or placed
+ * wrong. Its landmarks are marked as look-alikes for the rest of the run,
+ * and a look-alike no longer confirms a kidnap alone (it still counts among
+ * `min_distinct_landmarks`).
+ *
  * Return. One landmark recognized falsely but consistently (a repeated
  * texture) confirms a hypothesis as well as a real kidnap does. So a
  * declared kidnap stays reversible: the cloud the filter left becomes a
@@ -123,6 +131,8 @@ class CKidnapDetector
 	bool localized() const { return m_localized; }
 	uint64_t kidnapsDetected() const { return m_detections; }
 	uint64_t kidnapsReverted() const { return m_reverts; }
+	/** Landmarks marked as look-alikes (see the file comment). */
+	size_t lookAlikes() const { return m_lookAlikes.size(); }
 	const CRelocalizationHypothesis& hypothesis() const { return m_hypothesis; }
 	/** The filter switched to the hypothesis: drops it, and keeps the cloud
 	 * it left (poses, log-weights, map) as the return hypothesis. */
@@ -138,14 +148,20 @@ class CKidnapDetector
 	bool m_localized = true;
 	uint64_t m_detections = 0;
 	CRelocalizationHypothesis m_hypothesis;
-	bool m_hypothesisAnchoredPose = false;  //!< an anchored pose-kind landmark supports it
+	bool m_hypothesisConfirmableAlone = false;  //!< a landmark that confirmsAlone() supports it
 	CRelocalizationHypothesis m_return;
 	/** What the return test may use: landmarks anchored when the kidnap was
 	 * declared, other than those that confirmed it. */
 	mrpt::Clock::time_point m_returnAnchor{};
 	std::unordered_set<LandmarkKey, LandmarkKeyHash> m_kidnapSupport;
 	uint64_t m_reverts = 0;
+	std::unordered_set<LandmarkKey, LandmarkKeyHash> m_lookAlikes;
 
+	/** Whether this evidence may confirm a kidnap as the only landmark. */
+	bool confirmsAlone(const Evidence& e) const;
+	/** The hypothesis is dropped by an explained anchored measurement: if it
+	 * had explained enough frames, its landmarks become look-alikes. */
+	void dropHypothesis();
 	/** The return test on one frame's evidence; true if it reverts. */
 	bool contradictsKidnap(const std::vector<Evidence>& evidence, const Context& ctx);
 };

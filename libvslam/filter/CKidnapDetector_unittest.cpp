@@ -179,6 +179,38 @@ TEST_F(KidnapDetectorTest, AnExplainedAnchoredMeasurementDropsTheHypothesis)
 	EXPECT_FALSE(d.hypothesis().active());
 }
 
+TEST_F(KidnapDetectorTest, ALandmarkThatToldAFalseStoryNoLongerConfirmsAlone)
+{
+	// Landmark 0 is recognized as if the robot stood elsewhere (its twin
+	// hangs there), until landmark 1 confirms the belief.
+	CKidnapDetector d;
+	feed(d, 0, {});
+	const se2::Pose elsewhere{3, 4, 1.0};
+	const auto twinZ = se2::between(elsewhere, kL1);
+	for (int f = 1; f <= 3; f++) EXPECT_EQ(feed(d, f, {seen(0, twinZ, false, at(0))}), V::Unexplained) << f;
+	EXPECT_EQ(feed(d, 4, {seen(1, se2::between(kTrue, kL2), true, at(0))}), V::Localized);
+	EXPECT_EQ(d.lookAlikes(), 1u);
+	// The twin again, however often: no kidnap from it alone ...
+	for (int f = 5; f <= 16; f++) EXPECT_EQ(feed(d, f, {seen(0, twinZ, false, at(0))}), V::Unexplained) << f;
+	EXPECT_EQ(d.kidnapsDetected(), 0u);
+	// ... but a second landmark that agrees with it confirms one.
+	EXPECT_EQ(feed(d, 17, {seen(1, se2::between(elsewhere, kL2), false, at(0))}), V::Kidnapped);
+}
+
+TEST_F(KidnapDetectorTest, AStrayRecognitionOrTwoMarksNoLookAlike)
+{
+	// Fewer unexplained frames than min_unexplained_frames are a stray false
+	// recognition, not a consistent story: the landmark still confirms alone.
+	CKidnapDetector d;
+	feed(d, 0, {});
+	const auto z1 = se2::between(kTrue, kL1);
+	for (int f = 1; f <= 2; f++) feed(d, f, {seen(0, {0.3, -2, 2.0}, false, at(0))});
+	EXPECT_EQ(feed(d, 3, {seen(1, se2::between(kTrue, kL2), true, at(0))}), V::Localized);
+	EXPECT_EQ(d.lookAlikes(), 0u);
+	for (int f = 4; f <= 6; f++) EXPECT_EQ(feed(d, f, {seen(0, z1, false, at(0))}), V::Unexplained) << f;
+	EXPECT_EQ(feed(d, 7, {seen(0, z1, false, at(0))}), V::Kidnapped);
+}
+
 TEST_F(KidnapDetectorTest, DisabledDetectorNeverDeclares)
 {
 	CKidnapDetector d;
@@ -219,6 +251,7 @@ TEST_F(ReturnHypothesisTest, AnotherLandmarkExplainedOnlyByTheLeftCloudReverts)
 	ASSERT_TRUE(d.returnHypothesis().active());
 	EXPECT_EQ(feed(d, 7, {seen(1, se2::between(kTrue, kL2), false, at(0))}), V::Reverted);
 	EXPECT_EQ(d.kidnapsReverted(), 1u);
+	EXPECT_EQ(d.lookAlikes(), 1u);  // the landmark that confirmed the false kidnap
 	EXPECT_TRUE(d.localized());
 	for (const auto& p : d.returnHypothesis().poses())
 		ASSERT_LT(std::hypot(p.x - kTrue.x, p.y - kTrue.y), 0.05);
