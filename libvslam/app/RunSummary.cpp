@@ -94,7 +94,7 @@ yaml filterNode(const CVSlamParticleFilter& f)
 	n["unexplained_frames"] = fs.unexplainedFrames;
 	n["kidnaps_detected"] = fs.kidnapsDetected;
 	n["kidnaps_reverted"] = fs.kidnapsReverted;
-	n["look_alike_landmarks"] = fs.lookAlikeLandmarks;
+	n["look_alike_landmarks"] = f.kidnapDetector().lookAlikes();
 	n["loop_closures"] = fs.loopClosures;
 	n["loop_closure_edges_left_out"] = fs.loopClosureEdgesLeftOut;
 	yaml h = yaml::Map();

@@ -265,7 +265,6 @@ CKidnapDetector::Verdict CVSlamParticleFilter::kidnapVerdict(mrpt::Clock::time_p
 		t, evidence, {mp, m_particles[bestParticleIndex()].d.bank, m_particles.size(), m_likelihood, m_rng});
 	m_stats.unexplainedFrames +=
 		verdict == CKidnapDetector::Verdict::Unexplained || verdict == CKidnapDetector::Verdict::Kidnapped;
-	m_stats.lookAlikeLandmarks = m_kidnap.lookAlikes();
 	m_lastFrame.hypothesisSupport = m_kidnap.hypothesis().support();
 	return verdict;
 }

@@ -63,9 +63,6 @@ struct TFilterStats
 	uint64_t kidnapsDetected = 0;
 	/** Declared kidnaps another landmark contradicted: the filter went back. */
 	uint64_t kidnapsReverted = 0;
-	/** Landmarks found to look like another place (a picture hung twice):
-	 * they no longer confirm a kidnap alone. */
-	uint64_t lookAlikeLandmarks = 0;
 	/** Frames whose anchored measurements the filter could not explain
 	 * (a relocalization hypothesis was tested). */
 	uint64_t unexplainedFrames = 0;
