@@ -40,8 +40,10 @@ class CFeatureExtractor
 		int sift_features = 600;  //!< strongest features kept per image (0: all)
 		double sift_contrast_threshold = 0.03;
 		/** SIFT's first octave on the image doubled (OpenCV's way: the finest
-		 * features), or on the image as it is (false: about half the time, and
-		 * fewer features on small images). */
+		 * features), or on the image as it is (false: about a third of the
+		 * time). OpenCV 4.6 always doubles, so `false` halves the image first:
+		 * the features then see only the half image's detail, which costs
+		 * accuracy at 640x480 as well as at 320x240. */
 		bool sift_upsample = true;
 		/** Gaussian blur (std, px) of the image before SIFT: a cheap camera's
 		 * pixel noise and JPEG blocks make fine-scale extrema that do not repeat
