@@ -2,12 +2,17 @@
 #include <libvslam/frontend/ImageFeatures.h>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 using namespace vslam;
 
 namespace
 {
 /** Lowe's edge threshold (the ratio of principal curvatures): OpenCV's default. */
 constexpr double kSiftEdgeThreshold = 10;
+/** The narrowest image SIFT is given: a few octaves, however small the camera. */
+constexpr int kMinSiftCols = 32;
 }  // namespace
 
 void CFeatureExtractor::TOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
@@ -15,7 +20,9 @@ void CFeatureExtractor::TOptions::loadFromConfigFile(const mrpt::config::CConfig
 	using namespace config;
 	sift_features = readCount(c, s, "sift_features", sift_features, 0, 100000);
 	sift_contrast_threshold = readDouble(c, s, "sift_contrast_threshold", sift_contrast_threshold, Range::closed(0, 1));
-	sift_upsample = readBool(c, s, "sift_upsample", sift_upsample);
+	sift_max_cols = readCount(c, s, "sift_max_cols", sift_max_cols, 0, 100000);
+	if (sift_max_cols != 0 && sift_max_cols < kMinSiftCols)
+		throw ConfigError("[" + s + "] sift_max_cols must be 0 or at least " + std::to_string(kMinSiftCols));
 	sift_denoise_sigma = readDouble(c, s, "sift_denoise_sigma", sift_denoise_sigma, Range::closed(0, 5));
 	match_ratio = readDouble(c, s, "match_ratio", match_ratio, {0, 1, false, true});
 }
@@ -26,15 +33,15 @@ void CFeatureExtractor::TOptions::saveToConfigFile(mrpt::config::CConfigFileBase
 	c.write(s, "sift_contrast_threshold", sift_contrast_threshold, 30, 10, "SIFT contrast threshold");
 	c.write(s, "sift_denoise_sigma", sift_denoise_sigma, 30, 10,
 		"Gaussian blur of the image before SIFT against pixel noise [px std] (0: none)");
-	c.write(s, "sift_upsample", sift_upsample, 30, 10,
-		"SIFT's first octave on the image doubled (true: finest features) or as it is (false: about 3x faster, less accurate)");
+	c.write(s, "sift_max_cols", sift_max_cols, 30, 10,
+		"Images wider than this [px] are scaled down to it before SIFT, which doubles its input: the finest features' detail and SIFT's time (0: as they are; else at least 32)");
 	c.write(s, "match_ratio", match_ratio, 30, 10,
 		"Ratio test of every feature match (creation, candidates, recognition, heading change): best / second-best distance below this");
 }
 
 CFeatureExtractor::CFeatureExtractor(const TOptions& o)
 	: m_sift(cv::SIFT::create(o.sift_features, 3, o.sift_contrast_threshold, kSiftEdgeThreshold)),
-	  m_upsample(o.sift_upsample),
+	  m_maxCols(o.sift_max_cols),
 	  m_denoiseSigma(o.sift_denoise_sigma)
 {
 }
@@ -50,29 +57,23 @@ constexpr float kOpenCvUpsamplingShift = 0.25f;
 
 std::vector<cv::Point2f> CFeatureExtractor::detect(const cv::Mat& grey, cv::Mat& descriptors) const
 {
-	std::vector<cv::KeyPoint> keypoints;
 	std::vector<cv::Point2f> pixels;
-	if (m_upsample)
+	cv::Mat input = grey;
+	if (m_maxCols > 0 && grey.cols > m_maxCols)
 	{
-		m_sift->detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
-		for (const auto& k : keypoints)
-			pixels.emplace_back(k.pt.x - kOpenCvUpsamplingShift, k.pt.y - kOpenCvUpsamplingShift);
-		return pixels;
+		const int rows = std::max(1, static_cast<int>(std::lround(static_cast<double>(grey.rows) * m_maxCols / grey.cols)));
+		cv::resize(grey, input, cv::Size(m_maxCols, rows), 0, 0, cv::INTER_AREA);
 	}
-	// SIFT's first octave on the image as it is: give OpenCV the image halved
-	// (area averaging), which it doubles back. Each pixel i of the half image
-	// averages the input over [i * s, (i + 1) * s), its centre at
-	// (i + 0.5) * s - 0.5.
-	if (grey.cols < 2 || grey.rows < 2) return pixels;
-	cv::Mat half;
-	cv::resize(grey, half, cv::Size(grey.cols / 2, grey.rows / 2), 0, 0, cv::INTER_AREA);
-	m_sift->detectAndCompute(half, cv::noArray(), keypoints, descriptors);
-	const float sx = static_cast<float>(grey.cols) / half.cols, sy = static_cast<float>(grey.rows) / half.rows;
+	std::vector<cv::KeyPoint> keypoints;
+	m_sift->detectAndCompute(input, cv::noArray(), keypoints, descriptors);
+	pixels.reserve(keypoints.size());
 	for (const auto& k : keypoints)
-	{
-		const cv::Point2f inHalf(k.pt.x - kOpenCvUpsamplingShift, k.pt.y - kOpenCvUpsamplingShift);
-		pixels.emplace_back((inHalf.x + 0.5f) * sx - 0.5f, (inHalf.y + 0.5f) * sy - 0.5f);
-	}
+		pixels.emplace_back(k.pt.x - kOpenCvUpsamplingShift, k.pt.y - kOpenCvUpsamplingShift);
+	if (input.cols == grey.cols) return pixels;
+	// Each pixel i of the scaled image averages the input over
+	// [i * s, (i + 1) * s), its centre at (i + 0.5) * s - 0.5.
+	const float sx = static_cast<float>(grey.cols) / input.cols, sy = static_cast<float>(grey.rows) / input.rows;
+	for (auto& p : pixels) p = {(p.x + 0.5f) * sx - 0.5f, (p.y + 0.5f) * sy - 0.5f};
 	return pixels;
 }
 

@@ -1,13 +1,16 @@
 /** Where CFeatureExtractor puts its features: at their true pixel positions,
- * in either SIFT mode. A feature's position is checked without knowing where
+ * whether SIFT sees the image as it is or scaled down. A feature's position is checked without knowing where
  * SIFT should find it: the image turned by 180 degrees has the same
  * features, each at (W - 1 - x, H - 1 - y), so any constant offset in the
  * reported positions shows as twice itself. */
 #include <gtest/gtest.h>
+#include <libvslam/config/ConfigError.h>
 #include <libvslam/frontend/ImageFeatures.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -42,10 +45,10 @@ struct Offsets
 
 /** Median of (x + x') - (W - 1) over features found at the same place in
  * the image and in the image turned by 180 degrees: twice the offset. */
-Offsets twiceTheOffset(int cols, int rows, bool upsample)
+Offsets twiceTheOffset(int cols, int rows, int maxCols)
 {
 	CFeatureExtractor::TOptions o;
-	o.sift_upsample = upsample;
+	o.sift_max_cols = maxCols;
 	const CFeatureExtractor extractor(o);
 	const auto calibration = calibrationOf(cols, rows);
 	const cv::Mat image = texturedImage(cols, rows);
@@ -78,12 +81,14 @@ Offsets twiceTheOffset(int cols, int rows, bool upsample)
 	return out;
 }
 
-/** Features of images of each size lie where they are, to 0.025 pixels. */
-void expectTruePositions(const std::vector<std::pair<int, int>>& sizes, bool upsample)
+/** Features of images of each size, detected on the image scaled by
+ * `scale` (1: as it is), lie where they are, to 0.025 pixels. */
+void expectTruePositions(const std::vector<std::pair<int, int>>& sizes, double scale)
 {
 	for (const auto& [cols, rows] : sizes)
 	{
-		const Offsets o = twiceTheOffset(cols, rows, upsample);
+		const int maxCols = scale < 1 ? static_cast<int>(std::lround(cols * scale)) : 0;
+		const Offsets o = twiceTheOffset(cols, rows, maxCols);
 		ASSERT_GE(o.paired, 100u) << cols << "x" << rows;
 		EXPECT_NEAR(o.medianX, 0, 0.05) << cols << "x" << rows;
 		EXPECT_NEAR(o.medianY, 0, 0.05) << cols << "x" << rows;
@@ -95,26 +100,42 @@ TEST(CFeatureExtractor, FeaturesAreAtTheirTruePixelPositionsOnTheDoubledImage)
 {
 	// Without the correction OpenCV's positions are a quarter pixel off:
 	// twice the offset is 0.5.
-	expectTruePositions({{320, 240}, {321, 241}}, true);
+	expectTruePositions({{320, 240}, {321, 241}}, 1);
 }
 
-TEST(CFeatureExtractor, FeaturesAreAtTheirTruePixelPositionsWithoutUpsampling)
+TEST(CFeatureExtractor, FeaturesAreAtTheirTruePixelPositionsOnAScaledDownImage)
 {
-	expectTruePositions({{640, 480}, {641, 481}}, false);
+	expectTruePositions({{640, 480}, {641, 481}}, 0.5);
+	expectTruePositions({{640, 480}}, 0.75);
 }
 
-TEST(CFeatureExtractor, WithoutUpsamplingTheFinestScaleIsLeftOut)
+TEST(CFeatureExtractor, AnImageScaledDownLosesItsFinestFeatures)
 {
-	// The doubled image's octave holds the smallest blobs: without it fewer
-	// features pass on a fine texture.
+	// The doubled full image's octave holds the smallest blobs: on the image
+	// halved fewer features pass on a fine texture.
 	CFeatureExtractor::TOptions fine, coarse;
 	fine.sift_features = coarse.sift_features = 0;
-	coarse.sift_upsample = false;
+	fine.sift_max_cols = 0;
+	coarse.sift_max_cols = 160;
 	const cv::Mat image = texturedImage(320, 240);
-	const auto withUpsampling = CFeatureExtractor(fine).extract(image, calibrationOf(320, 240));
-	const auto without = CFeatureExtractor(coarse).extract(image, calibrationOf(320, 240));
-	EXPECT_GT(without.size(), 0u);
-	EXPECT_LT(without.size(), withUpsampling.size());
-	EXPECT_EQ(without.descriptors.rows, static_cast<int>(without.size()));
-	EXPECT_EQ(without.descriptors.cols, 128);
+	const auto full = CFeatureExtractor(fine).extract(image, calibrationOf(320, 240));
+	const auto halved = CFeatureExtractor(coarse).extract(image, calibrationOf(320, 240));
+	EXPECT_GT(halved.size(), 0u);
+	EXPECT_LT(halved.size(), full.size());
+	EXPECT_EQ(halved.descriptors.rows, static_cast<int>(halved.size()));
+	EXPECT_EQ(halved.descriptors.cols, 128);
+}
+
+TEST(CFeatureExtractor, AWidthTooSmallForSiftIsAConfigurationError)
+{
+	const auto load = [](const std::string& value) {
+		mrpt::config::CConfigFileMemory ini("[vslam_features]\nsift_max_cols = " + value + "\n");
+		CFeatureExtractor::TOptions o;
+		o.loadFromConfigFile(ini, "vslam_features");
+		return o.sift_max_cols;
+	};
+	EXPECT_EQ(load("0"), 0);
+	EXPECT_EQ(load("32"), 32);
+	EXPECT_THROW(load("31"), ConfigError);
+	EXPECT_THROW(load("-1"), ConfigError);
 }
