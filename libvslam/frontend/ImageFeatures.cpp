@@ -61,7 +61,8 @@ std::vector<cv::Point2f> CFeatureExtractor::detect(const cv::Mat& grey, cv::Mat&
 	cv::Mat input = grey;
 	if (m_maxCols > 0 && grey.cols > m_maxCols)
 	{
-		const int rows = std::max(1, static_cast<int>(std::lround(static_cast<double>(grey.rows) * m_maxCols / grey.cols)));
+		const double scale = static_cast<double>(m_maxCols) / grey.cols;
+		const int rows = std::max(1, static_cast<int>(std::lround(grey.rows * scale)));
 		cv::resize(grey, input, cv::Size(m_maxCols, rows), 0, 0, cv::INTER_AREA);
 	}
 	std::vector<cv::KeyPoint> keypoints;

@@ -1,8 +1,8 @@
 /** Where CFeatureExtractor puts its features: at their true pixel positions,
- * whether SIFT sees the image as it is or scaled down. A feature's position is checked without knowing where
- * SIFT should find it: the image turned by 180 degrees has the same
- * features, each at (W - 1 - x, H - 1 - y), so any constant offset in the
- * reported positions shows as twice itself. */
+ * whether SIFT sees the image as it is or scaled down. A feature's position
+ * is checked without knowing where SIFT should find it: the image turned
+ * by 180 degrees has the same features, each at (W - 1 - x, H - 1 - y), so
+ * any constant offset in the reported positions shows as twice itself. */
 #include <gtest/gtest.h>
 #include <libvslam/config/ConfigError.h>
 #include <libvslam/frontend/ImageFeatures.h>
