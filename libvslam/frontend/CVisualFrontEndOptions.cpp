@@ -20,7 +20,6 @@ constexpr const char* kOldSection = "vslam_frontend";
 const MovedKey kMovedKeys[] = {
 	{"sift_features", CFeatureExtractor::TOptions::kSection, "sift_features"},
 	{"sift_contrast_threshold", CFeatureExtractor::TOptions::kSection, "sift_contrast_threshold"},
-	{"sift_max_cols", CFeatureExtractor::TOptions::kSection, "sift_max_cols"},
 	{"sift_denoise_sigma", CFeatureExtractor::TOptions::kSection, "sift_denoise_sigma"},
 	{"match_ratio", CFeatureExtractor::TOptions::kSection, "match_ratio"},
 	{"creation_views", CLandmarkCreator::TOptions::kSection, "views"},

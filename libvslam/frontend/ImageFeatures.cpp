@@ -57,7 +57,6 @@ constexpr float kOpenCvUpsamplingShift = 0.25f;
 
 std::vector<cv::Point2f> CFeatureExtractor::detect(const cv::Mat& grey, cv::Mat& descriptors) const
 {
-	std::vector<cv::Point2f> pixels;
 	cv::Mat input = grey;
 	if (m_maxCols > 0 && grey.cols > m_maxCols)
 	{
@@ -67,6 +66,7 @@ std::vector<cv::Point2f> CFeatureExtractor::detect(const cv::Mat& grey, cv::Mat&
 	}
 	std::vector<cv::KeyPoint> keypoints;
 	m_sift->detectAndCompute(input, cv::noArray(), keypoints, descriptors);
+	std::vector<cv::Point2f> pixels;
 	pixels.reserve(keypoints.size());
 	for (const auto& k : keypoints)
 		pixels.emplace_back(k.pt.x - kOpenCvUpsamplingShift, k.pt.y - kOpenCvUpsamplingShift);
